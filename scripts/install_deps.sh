@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs ontile's build dependencies from Debian packages when any is missing (needs root
+# or sudo). Safe to run repeatedly: it does nothing when everything is present.
+set -euo pipefail
+packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libtbb-dev
+          libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
+          libstb-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

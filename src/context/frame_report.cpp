@@ -1,0 +1,144 @@
+// Frame report totals, JSON and table (see frame_report.h).
+#include "context/frame_report.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace ontile {
+
+uint64_t FrameReport::bytes_read() const {
+  uint64_t sum = 0;
+  for (const PassReport& p : passes) sum += p.bytes_read();
+  return sum;
+}
+
+uint64_t FrameReport::bytes_written() const {
+  uint64_t sum = 0;
+  for (const PassReport& p : passes) sum += p.bytes_written();
+  return sum;
+}
+
+std::map<std::string, uint64_t> FrameReport::bytes_by_category() const {
+  std::map<std::string, uint64_t> c{{"attachment_load", 0}, {"attachment_store", 0},
+                                    {"resolve", 0}, {"vertex_index", 0},
+                                    {"parameter_buffer_write", 0}, {"parameter_buffer_read", 0}};
+  for (const PassReport& p : passes) {
+    for (const AttachmentTraffic& a : p.attachments) {
+      c["attachment_load"] += a.bytes_loaded;
+      c["attachment_store"] += a.bytes_stored;
+      c["resolve"] += a.bytes_resolved;
+    }
+    c["vertex_index"] += p.geometry.index_bytes_read + p.geometry.vertex_bytes_read;
+    c["parameter_buffer_write"] += p.geometry.parameter_bytes_written;
+    c["parameter_buffer_read"] += p.tiles.parameter_bytes_read;
+  }
+  return c;
+}
+
+namespace {
+
+nlohmann::json geometry_json(const GeometryCounters& g) {
+  return {{"triangles_submitted", g.triangles_submitted},
+          {"triangles_binned", g.triangles_binned},
+          {"triangles_culled", g.triangles_culled},
+          {"triangles_clipped", g.triangles_clipped},
+          {"triangles_outside", g.triangles_outside},
+          {"triangles_zero_area", g.triangles_zero_area},
+          {"triangles_non_finite", g.triangles_non_finite},
+          {"vertices_shaded", g.vertices_shaded},
+          {"varyings_sanitized", g.varyings_sanitized},
+          {"tile_list_entries", g.tile_list_entries}};
+}
+
+nlohmann::json pass_json(const PassReport& p) {
+  nlohmann::json attachments = nlohmann::json::array();
+  for (const AttachmentTraffic& a : p.attachments) {
+    attachments.push_back({{"name", a.name},
+                           {"format", format_name(a.format)},
+                           {"transient", a.transient},
+                           {"bytes_loaded", a.bytes_loaded},
+                           {"bytes_stored", a.bytes_stored},
+                           {"bytes_resolved", a.bytes_resolved}});
+  }
+  const uint64_t pixels = static_cast<uint64_t>(p.width_px) * p.height_px;
+  return {{"name", p.name},
+          {"width_px", p.width_px},
+          {"height_px", p.height_px},
+          {"samples", p.samples},
+          {"tile_size_px", {p.tile_width_px, p.tile_height_px}},
+          {"tile_size_reduced", p.tile_size_reduced},
+          {"color_bits_per_px", p.color_bits_per_px},
+          {"tiles", p.tiles_total},
+          {"tiles_executed", p.tiles.tiles_executed},
+          {"bytes_read", p.bytes_read()},
+          {"bytes_written", p.bytes_written()},
+          {"parameter_buffer", {{"bytes_written", p.geometry.parameter_bytes_written},
+                                {"bytes_read", p.tiles.parameter_bytes_read}}},
+          {"vertex_index_bytes_read", p.geometry.index_bytes_read + p.geometry.vertex_bytes_read},
+          {"fragments_shaded", p.tiles.fragments_shaded},
+          {"fragments_depth_rejected", p.tiles.fragments_depth_rejected},
+          {"overdraw", pixels ? static_cast<double>(p.tiles.fragments_shaded) / pixels : 0.0},
+          {"geometry", geometry_json(p.geometry)},
+          {"attachments", attachments}};
+}
+
+std::string mib(uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+  return buf;
+}
+
+}  // namespace
+
+nlohmann::json frame_report_json(const FrameReport& frame) {
+  nlohmann::json passes = nlohmann::json::array();
+  nlohmann::json timing_passes = nlohmann::json::array();
+  for (const PassReport& p : frame.passes) {
+    passes.push_back(pass_json(p));
+    timing_passes.push_back({{"name", p.name}, {"binning_ms", p.binning_ms}, {"tiles_ms", p.tiles_ms}});
+  }
+  nlohmann::json categories = nlohmann::json::object();
+  for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
+  return {{"format", "ontile-report"},
+          {"version", 1},
+          {"frame", {{"bytes_read", frame.bytes_read()},
+                     {"bytes_written", frame.bytes_written()},
+                     {"by_category", categories}}},
+          {"passes", passes},
+          {"timing", {{"threads", frame.threads}, {"total_ms", frame.total_ms},
+                      {"passes", timing_passes}}}};
+}
+
+std::string frame_report_table(const FrameReport& frame) {
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-22s %8s %6s %14s %14s %12s %10s\n", "pass", "tile", "tiles",
+                "read", "written", "fragments", "overdraw");
+  out << line;
+  for (const PassReport& p : frame.passes) {
+    const double pixels = static_cast<double>(p.width_px) * p.height_px;
+    std::snprintf(line, sizeof line, "%-22s %5dx%-2d %6llu %14s %14s %12llu %10.2f\n",
+                  p.name.c_str(), p.tile_width_px, p.tile_height_px,
+                  static_cast<unsigned long long>(p.tiles_total), mib(p.bytes_read()).c_str(),
+                  mib(p.bytes_written()).c_str(),
+                  static_cast<unsigned long long>(p.tiles.fragments_shaded),
+                  pixels > 0 ? p.tiles.fragments_shaded / pixels : 0.0);
+    out << line;
+    for (const AttachmentTraffic& a : p.attachments) {
+      std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s\n",
+                    a.name.c_str(), format_name(a.format), a.transient ? "transient" : "memory",
+                    mib(a.bytes_loaded).c_str(), mib(a.bytes_stored).c_str(),
+                    mib(a.bytes_resolved).c_str());
+      out << line;
+    }
+  }
+  out << "frame: read " << mib(frame.bytes_read()) << " (" << frame.bytes_read() << " B), written "
+      << mib(frame.bytes_written()) << " (" << frame.bytes_written() << " B)\n";
+  for (const auto& [name, bytes] : frame.bytes_by_category()) {
+    std::snprintf(line, sizeof line, "  %-24s %14s\n", name.c_str(), mib(bytes).c_str());
+    out << line;
+  }
+  return out.str();
+}
+
+}  // namespace ontile

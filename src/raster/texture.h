@@ -1,0 +1,70 @@
+// 2D textures with full mip chains and the sampler a fragment shader uses: nearest, bilinear
+// and trilinear filtering, repeat/clamp/mirror wrapping, LOD from 2x2-quad derivatives.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace ontile {
+
+enum class WrapMode { Repeat, ClampToEdge, MirroredRepeat };
+enum class FilterMode { Nearest, Linear };
+enum class MipmapMode { None, Nearest, Linear };  // None: base level only
+
+struct SamplerDesc {
+  FilterMode mag_filter = FilterMode::Linear;
+  FilterMode min_filter = FilterMode::Linear;
+  MipmapMode mipmap_mode = MipmapMode::Linear;
+  WrapMode wrap_u = WrapMode::Repeat;
+  WrapMode wrap_v = WrapMode::Repeat;
+  float lod_bias = 0.0f;
+};
+
+// How texels are stored; sampling always returns linear float RGBA.
+enum class TexelEncoding { Unorm8, Srgb8, Float32 };
+
+class Texture2D {
+ public:
+  // Builds the mip chain down to 1x1 (2x2 box filter in linear space; odd sizes floor, the
+  // last row/column folded in) from base-level RGBA8 texels, row-major, top row first.
+  static std::shared_ptr<const Texture2D> from_rgba8(int width, int height,
+                                                     std::vector<uint8_t> rgba, bool srgb,
+                                                     std::string name = {});
+  static std::shared_ptr<const Texture2D> from_rgba32f(int width, int height,
+                                                       std::vector<float> rgba,
+                                                       std::string name = {});
+
+  int width(int level = 0) const;
+  int height(int level = 0) const;
+  int level_count() const;
+  TexelEncoding encoding() const;
+  const std::string& name() const;
+  // Bytes one texel occupies in memory (4 for 8-bit encodings, 16 for Float32).
+  int bytes_per_texel() const;
+
+  // One texel, decoded to linear float. x, y must be inside the level.
+  glm::vec4 fetch(int level, int x, int y) const;
+  // Filtered sample at uv (0..1 spans the texture; v = 0 is the top row, as in glTF) and an
+  // explicit level of detail (0 = base level).
+  glm::vec4 sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const;
+  // Samples the 4 lanes of a 2x2 quad (lane order: (0,0), (1,0), (0,1), (1,1)). The LOD comes
+  // from the quad's uv derivatives as in the OpenGL 4.6 spec, section 8.14.1.
+  void sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4]) const;
+
+  struct Level {
+    int width = 0, height = 0;
+    std::vector<uint8_t> texels8;  // Unorm8/Srgb8
+    std::vector<float> texels32f;  // Float32
+  };
+
+ private:
+  Texture2D() = default;
+  std::vector<Level> levels_;
+  TexelEncoding encoding_ = TexelEncoding::Unorm8;
+  std::string name_;
+};
+
+}  // namespace ontile

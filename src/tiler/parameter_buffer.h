@@ -1,0 +1,55 @@
+// The per-pass parameter buffer a tiler writes while binning and every tile reads: set-up
+// triangles with their varyings, and a primitive list per screen tile (CSR layout, each list
+// in submission order so tiles replay draws exactly as recorded).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "raster/triangle_setup.h"
+#include "tiler/pass_report.h"
+#include "tiler/render_pass.h"
+
+namespace ontile {
+
+struct BinnedTriangle {
+  TriangleSetup setup;
+  uint32_t varying_offset = 0;  // into ParameterBuffer::varyings: 3 * varying_count floats,
+                                // in setup slot order
+  uint32_t subpass = 0;
+  uint32_t draw = 0;            // index into the subpass's draws
+  uint32_t primitive_id = 0;
+};
+
+struct TileGrid {
+  int width_px = 0, height_px = 0;
+  int tile_width_px = 16, tile_height_px = 16;
+  int tiles_x() const { return (width_px + tile_width_px - 1) / tile_width_px; }
+  int tiles_y() const { return (height_px + tile_height_px - 1) / tile_height_px; }
+  int tile_count() const { return tiles_x() * tiles_y(); }
+};
+
+// Bytes the memory model charges for parameter-buffer records (see docs/memory-model.md).
+constexpr uint32_t kPositionBytes = 16;         // post-transform x, y, z, w as float32
+constexpr uint32_t kPrimitiveRecordBytes = 12;  // three 32-bit vertex references
+constexpr uint32_t kTileListEntryBytes = 4;     // one 32-bit primitive reference per tile
+inline uint32_t post_transform_vertex_bytes(int varying_count) {
+  return kPositionBytes + 4u * static_cast<uint32_t>(varying_count);
+}
+
+struct ParameterBuffer {
+  TileGrid grid;
+  std::vector<BinnedTriangle> triangles;
+  std::vector<float> varyings;
+  std::vector<uint32_t> tile_offsets;    // tile_count + 1 entries
+  std::vector<uint32_t> tile_triangles;  // triangle indices, per tile in submission order
+  GeometryCounters counters;
+
+  uint32_t tile_triangle_count(int tile) const { return tile_offsets[tile + 1] - tile_offsets[tile]; }
+};
+
+// Runs the geometry phase of a pass: vertex shading, primitive assembly, NaN/Inf rejection,
+// clipping, setup, culling and binning into the tiles whose area each triangle's edges touch.
+// Runs in parallel on the current oneTBB arena; the result does not depend on thread count.
+ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid);
+
+}  // namespace ontile

@@ -1,0 +1,70 @@
+// Counters a render pass produces: geometry, parameter-buffer and attachment traffic in bytes,
+// fragment work, and per-attachment load/store bytes. All integers, so sums are exact and
+// independent of the order tiles ran in.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "raster/pixel_format.h"
+
+namespace ontile {
+
+struct GeometryCounters {
+  uint64_t triangles_submitted = 0;
+  uint64_t triangles_non_finite = 0;   // dropped: a NaN/Inf clip-space position
+  uint64_t triangles_culled = 0;       // back/front-face culling
+  uint64_t triangles_zero_area = 0;    // degenerate after snapping
+  uint64_t triangles_outside = 0;      // trivially rejected or clipped away entirely
+  uint64_t triangles_clipped = 0;      // needed near/far/guard-band clipping
+  uint64_t triangles_binned = 0;       // set-up triangles in the parameter buffer
+  uint64_t vertices_shaded = 0;
+  uint64_t varyings_sanitized = 0;     // NaN/Inf varyings replaced by 0
+  uint64_t tile_list_entries = 0;      // (tile, triangle) pairs
+  uint64_t index_bytes_read = 0;
+  uint64_t vertex_bytes_read = 0;      // unique vertices fetched per draw
+  uint64_t parameter_bytes_written = 0;
+
+  void add(const GeometryCounters& o);
+};
+
+struct TileCounters {
+  uint64_t tiles_executed = 0;         // tiles that had primitives to rasterize
+  uint64_t parameter_bytes_read = 0;
+  uint64_t fragments_shaded = 0;       // covered pixels whose fragment shader ran
+  uint64_t fragments_depth_rejected = 0;  // covered pixels with every sample failing depth
+  uint64_t samples_written = 0;        // colour/depth sample writes that passed all tests
+
+  void add(const TileCounters& o);
+};
+
+struct AttachmentTraffic {
+  std::string name;
+  PixelFormat format = PixelFormat::RGBA8_UNORM;
+  bool transient = false;
+  uint64_t bytes_loaded = 0;
+  uint64_t bytes_stored = 0;    // Store of all samples
+  uint64_t bytes_resolved = 0;  // Resolve writes of the averaged pixel
+};
+
+struct PassReport {
+  std::string name;
+  int width_px = 0, height_px = 0, samples = 1;
+  int tile_width_px = 0, tile_height_px = 0;
+  bool tile_size_reduced = false;  // the colour budget forced smaller tiles
+  int color_bits_per_px = 0;       // tile-memory colour bits per pixel the pass needs
+  uint64_t tiles_total = 0;
+  GeometryCounters geometry;
+  TileCounters tiles;
+  std::vector<AttachmentTraffic> attachments;
+  // Wall-clock times (not deterministic; never part of comparisons).
+  double binning_ms = 0.0;
+  double tiles_ms = 0.0;
+
+  uint64_t attachment_bytes_loaded() const;
+  uint64_t attachment_bytes_stored() const;  // Store + Resolve
+  uint64_t bytes_read() const;
+  uint64_t bytes_written() const;
+};
+
+}  // namespace ontile

@@ -1,0 +1,175 @@
+// Render pass execution (see render_pass_executor.h).
+#include "tiler/render_pass_executor.h"
+
+#include <chrono>
+
+#include <tbb/combinable.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "raster/sample_pattern.h"
+#include "tiler/parameter_buffer.h"
+#include "tiler/tile_executor.h"
+#include "util/error.h"
+
+namespace ontile {
+namespace {
+
+[[noreturn]] void invalid(const RenderPassDesc& pass, const std::string& what) {
+  throw Error("render pass '" + pass.name + "': " + what);
+}
+
+void validate(const RenderPassDesc& pass) {
+  if (pass.width_px <= 0 || pass.height_px <= 0 || pass.width_px > kMaxTargetSizePx ||
+      pass.height_px > kMaxTargetSizePx) {
+    invalid(pass, "size " + std::to_string(pass.width_px) + "x" + std::to_string(pass.height_px) +
+                      " outside 1.." + std::to_string(kMaxTargetSizePx));
+  }
+  if (!standard_sample_pattern(pass.samples)) {
+    invalid(pass, "sample count " + std::to_string(pass.samples) + " is not 1, 2, 4 or 8");
+  }
+  int color_count = 0;
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    const AttachmentDesc& d = pass.attachments[a];
+    const bool is_depth_slot = static_cast<int>(a) == pass.depth_index;
+    if (is_depth_slot != is_depth_format(d.format)) {
+      invalid(pass, "attachment '" + d.name + "' format " + format_name(d.format) +
+                        (is_depth_slot ? " is not a depth format" : " is a depth format but not the depth attachment"));
+    }
+    if (!is_depth_slot) ++color_count;
+    for (const Surface* s : {d.surface, d.resolve_surface}) {
+      if (!s) continue;
+      const int want_samples = s == d.surface ? pass.samples : 1;
+      if (s->width() != pass.width_px || s->height() != pass.height_px) {
+        invalid(pass, "attachment '" + d.name + "' surface is " + std::to_string(s->width()) +
+                          "x" + std::to_string(s->height()) + ", the pass is " +
+                          std::to_string(pass.width_px) + "x" + std::to_string(pass.height_px));
+      }
+      if (s->samples() != want_samples) {
+        invalid(pass, "attachment '" + d.name + "' surface has " + std::to_string(s->samples()) +
+                          " samples, expected " + std::to_string(want_samples));
+      }
+      if (s->format() != d.format) {
+        invalid(pass, "attachment '" + d.name + "' surface format " + format_name(s->format()) +
+                          " differs from the attachment's " + format_name(d.format));
+      }
+    }
+    if (d.load == LoadAction::Load && !d.surface) {
+      invalid(pass, "attachment '" + d.name + "' is transient but its load action is Load");
+    }
+    const bool resolves = d.store == StoreAction::Resolve || d.store == StoreAction::StoreAndResolve;
+    if (resolves && !d.resolve_surface) {
+      invalid(pass, "attachment '" + d.name + "' resolves but has no resolve surface");
+    }
+    if (resolves && is_depth_slot) invalid(pass, "depth attachment '" + d.name + "' cannot resolve");
+  }
+  if (color_count > kMaxColorTargets) {
+    invalid(pass, std::to_string(color_count) + " colour attachments (at most " +
+                      std::to_string(kMaxColorTargets) + ")");
+  }
+  if (pass.depth_index >= static_cast<int>(pass.attachments.size())) {
+    invalid(pass, "depth attachment index out of range");
+  }
+  for (size_t s = 0; s < pass.subpasses.size(); ++s) {
+    for (int a : pass.subpasses[s].color_outputs) {
+      if (a < 0 || a >= static_cast<int>(pass.attachments.size()) || a == pass.depth_index) {
+        invalid(pass, "subpass " + std::to_string(s) + " writes invalid attachment " + std::to_string(a));
+      }
+    }
+    for (const DrawCall& d : pass.subpasses[s].draws) {
+      if (!d.vertex_shader) invalid(pass, "draw in subpass " + std::to_string(s) + " has no vertex shader");
+    }
+  }
+}
+
+int color_bits_per_pixel(const RenderPassDesc& pass) {
+  int bits = 0;
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    if (static_cast<int>(a) != pass.depth_index) {
+      bits += bits_per_pixel(pass.attachments[a].format) * pass.samples;
+    }
+  }
+  return bits;
+}
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
+                      int& tile_height_px) {
+  tile_width_px = config.tile_size_px;
+  tile_height_px = config.tile_size_px;
+  const int64_t budget_bits = int64_t{config.color_budget_bits_per_px} * config.tile_size_px *
+                              config.tile_size_px;
+  while (int64_t{color_bits_per_px} * tile_width_px * tile_height_px > budget_bits &&
+         tile_width_px * tile_height_px > 4) {
+    if (tile_height_px >= tile_width_px) {
+      tile_height_px /= 2;
+    } else {
+      tile_width_px /= 2;
+    }
+  }
+}
+
+PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config) {
+  if (config.tile_size_px < 2 || config.tile_size_px > 256 ||
+      (config.tile_size_px & (config.tile_size_px - 1)) != 0) {
+    throw Error("tile size " + std::to_string(config.tile_size_px) +
+                " must be a power of two in 2..256");
+  }
+  validate(pass);
+  PassReport report;
+  report.name = pass.name;
+  report.width_px = pass.width_px;
+  report.height_px = pass.height_px;
+  report.samples = pass.samples;
+  report.color_bits_per_px = color_bits_per_pixel(pass);
+  select_tile_size(config, report.color_bits_per_px, report.tile_width_px, report.tile_height_px);
+  report.tile_size_reduced = report.tile_width_px * report.tile_height_px <
+                             config.tile_size_px * config.tile_size_px;
+
+  TileGrid grid{pass.width_px, pass.height_px, report.tile_width_px, report.tile_height_px};
+  report.tiles_total = static_cast<uint64_t>(grid.tile_count());
+
+  const auto bin_start = std::chrono::steady_clock::now();
+  const ParameterBuffer params = bin_triangles(pass, grid);
+  report.binning_ms = ms_since(bin_start);
+  report.geometry = params.counters;
+
+  const auto tiles_start = std::chrono::steady_clock::now();
+  tbb::enumerable_thread_specific<TileMemory> memories;
+  tbb::combinable<TileCounters> counters;
+  const int attachment_count = static_cast<int>(pass.attachments.size());
+  tbb::parallel_for(0, grid.tile_count(), [&](int tile) {
+    TileMemory& memory = memories.local();
+    memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
+    execute_tile(pass, params, tile, memory, counters.local());
+  });
+  counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
+  report.tiles_ms = ms_since(tiles_start);
+
+  // Every tile loads and stores its whole area, so attachment traffic is the surface size.
+  const uint64_t pixels = static_cast<uint64_t>(pass.width_px) * pass.height_px;
+  for (const AttachmentDesc& d : pass.attachments) {
+    AttachmentTraffic t;
+    t.name = d.name;
+    t.format = d.format;
+    t.transient = d.surface == nullptr;
+    const uint64_t all_samples = pixels * pass.samples * bytes_per_pixel(d.format);
+    if (d.load == LoadAction::Load && d.surface) t.bytes_loaded = all_samples;
+    if ((d.store == StoreAction::Store || d.store == StoreAction::StoreAndResolve) && d.surface) {
+      t.bytes_stored = all_samples;
+    }
+    if ((d.store == StoreAction::Resolve || d.store == StoreAction::StoreAndResolve) &&
+        d.resolve_surface) {
+      t.bytes_resolved = pixels * bytes_per_pixel(d.format);
+    }
+    report.attachments.push_back(t);
+  }
+  return report;
+}
+
+}  // namespace ontile

@@ -1,0 +1,25 @@
+// Executes a render pass the way a tile-based GPU does: validate, pick the tile size that fits
+// the tile-memory colour budget, bin all geometry, then run every tile in parallel (oneTBB)
+// and count the external memory traffic.
+#pragma once
+#include "tiler/pass_report.h"
+#include "tiler/render_pass.h"
+
+namespace ontile {
+
+struct TilerConfig {
+  int tile_size_px = 16;                 // Mali's 16x16 by default
+  int color_budget_bits_per_px = 128;    // tile-buffer colour bits per pixel (Mali-G76: 128)
+};
+
+// Runs on the calling thread's oneTBB arena (callers pick the thread count with a
+// tbb::task_arena). Throws ontile::Error when the pass is invalid.
+PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config);
+
+// The tile size used for a pass needing `color_bits_per_px` of tile memory: the configured
+// square tile, its area halved (height first) until the colour attachments fit the budget
+// (as panfrost's tile-size selection does for Mali).
+void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
+                      int& tile_height_px);
+
+}  // namespace ontile

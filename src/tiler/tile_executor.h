@@ -1,0 +1,13 @@
+// Runs one screen tile of a render pass: loads its attachments into tile memory, replays the
+// tile's primitive list through rasterization, depth test, shading and blending, then stores.
+#pragma once
+#include "tiler/parameter_buffer.h"
+#include "tiler/render_pass.h"
+#include "tiler/tile_memory.h"
+
+namespace ontile {
+
+void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
+                  TileMemory& memory, TileCounters& counters);
+
+}  // namespace ontile
