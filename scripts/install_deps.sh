@@ -4,7 +4,8 @@
 set -euo pipefail
 packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libtbb-dev
           libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
-          libstb-dev)
+          libstb-dev openimageio-tools)
+# openimageio-tools: Debian's OpenImageIO CMake config references its command-line tools.
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -29,7 +29,9 @@ enum class TexelEncoding { Unorm8, Srgb8, Float32 };
 class Texture2D {
  public:
   // Builds the mip chain down to 1x1 (2x2 box filter in linear space; odd sizes floor, the
-  // last row/column folded in) from base-level RGBA8 texels, row-major, top row first.
+  // last row/column folded in: the last texel along an odd axis averages 3 texels, 1/3 each)
+  // from base-level RGBA8 texels, row-major, top row first. Levels are re-encoded to 8 bits
+  // with round to nearest (sRGB encode for srgb). Throws Error (naming `name`) on a bad size.
   static std::shared_ptr<const Texture2D> from_rgba8(int width, int height,
                                                      std::vector<uint8_t> rgba, bool srgb,
                                                      std::string name = {});
@@ -48,7 +50,9 @@ class Texture2D {
   // One texel, decoded to linear float. x, y must be inside the level.
   glm::vec4 fetch(int level, int x, int y) const;
   // Filtered sample at uv (0..1 spans the texture; v = 0 is the top row, as in glTF) and an
-  // explicit level of detail (0 = base level).
+  // explicit level of detail (0 = base level; the sampler's lod_bias is added, as in GL/Vulkan).
+  // Non-finite uv components are treated as 0 and a NaN lod as 0, so sampling never reads out
+  // of bounds.
   glm::vec4 sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const;
   // Samples the 4 lanes of a 2x2 quad (lane order: (0,0), (1,0), (0,1), (1,1)). The LOD comes
   // from the quad's uv derivatives as in the OpenGL 4.6 spec, section 8.14.1.

@@ -21,7 +21,7 @@ struct Bounds {
   glm::vec3 center() const { return (min + max) * 0.5f; }
 };
 
-// One triangle list with de-indexed attribute streams (glTF primitive, mode TRIANGLES).
+// One indexed triangle list (glTF primitive, mode TRIANGLES) with per-vertex attribute streams.
 // Strips and fans are converted to lists at load time. Every stream that is present has one
 // entry per vertex; absent optional streams are empty.
 struct MeshPrimitive {

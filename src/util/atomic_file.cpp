@@ -20,8 +20,11 @@ void write_file_atomically(const std::filesystem::path& path,
     throw Error(path.string() + ": output folder '" + parent.string() + "' does not exist");
   }
   // Keep the extension last so that writers that pick a format from the name still can.
-  const fs::path tmp = parent / ("." + path.stem().string() + ".tmp" + std::to_string(getpid()) +
-                                 "_" + std::to_string(counter++) + path.extension().string());
+  std::string tmp_name = ".";
+  tmp_name += path.stem().string();
+  tmp_name += ".tmp" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  tmp_name += path.extension().string();
+  const fs::path tmp = parent / tmp_name;
   try {
     write(tmp);
     fs::rename(tmp, path);

@@ -1,0 +1,340 @@
+// Texture2D: mip chain construction and the sampler (OpenGL 4.6 sections 8.14-8.15, Vulkan
+// "Texel Filtering" / "Wrapping Operation"). Sampling is on the per-fragment hot path: no
+// allocation, encoding dispatched once per call, texel address = (y * width + x) * 4.
+#include "raster/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "raster/pixel_format.h"
+#include "util/error.h"
+
+namespace ontile {
+namespace {
+
+constexpr int kChannels = 4;
+// Beyond 2^24 every float is an integer, so reducing texel coordinates there (exact fmod, or a
+// clamp for ClampToEdge) keeps the selected texel and keeps indices far from int overflow.
+constexpr float kMaxExactTexelCoord = 16777216.0f;
+
+// Per-channel decode tables for 8-bit texels; unused for Float32.
+struct TexelDecoder {
+  const float* rgb = nullptr;
+  const float* alpha = nullptr;
+};
+
+TexelDecoder decoder_for(TexelEncoding encoding) {
+  const float* unorm = unorm8_decode_table().data();
+  if (encoding == TexelEncoding::Srgb8) return {srgb8_decode_table().data(), unorm};
+  return {unorm, unorm};
+}
+
+// Non-finite coordinates are treated as 0 so that NaN/Inf uv can never index out of bounds.
+inline float finite_or_zero(float x) { return std::isfinite(x) ? x : 0.0f; }
+
+template <bool kFloat>
+inline glm::vec4 load_texel(const Texture2D::Level& level, const TexelDecoder& decoder, int x,
+                            int y) {
+  const size_t index = (static_cast<size_t>(y) * level.width + x) * kChannels;
+  if constexpr (kFloat) {
+    const float* p = level.texels32f.data() + index;
+    return {p[0], p[1], p[2], p[3]};
+  } else {
+    const uint8_t* p = level.texels8.data() + index;
+    return {decoder.rgb[p[0]], decoder.rgb[p[1]], decoder.rgb[p[2]], decoder.alpha[p[3]]};
+  }
+}
+
+// Texel-space coordinate u * size - offset, kept small enough for int conversion without
+// changing the texel the wrap mode selects (see kMaxExactTexelCoord). A normalized |u| >= 2^24
+// is an even integer, which Repeat and MirroredRepeat map like 0.
+inline float texel_coord(float u, int size, WrapMode mode, float offset) {
+  if (!(std::fabs(u) < kMaxExactTexelCoord)) {
+    u = mode == WrapMode::ClampToEdge ? std::copysign(kMaxExactTexelCoord, u) : 0.0f;
+  }
+  const float x = u * static_cast<float>(size) - offset;
+  if (std::fabs(x) < kMaxExactTexelCoord) return x;
+  if (mode == WrapMode::ClampToEdge) return std::copysign(kMaxExactTexelCoord, x);
+  return std::fmod(x, static_cast<float>(mode == WrapMode::Repeat ? size : 2 * size));
+}
+
+// Integer texel index -> [0, size), Vulkan "Wrapping Operation".
+inline int wrap_texel_index(int i, int size, WrapMode mode) {
+  if (static_cast<unsigned>(i) < static_cast<unsigned>(size)) return i;  // common case
+  switch (mode) {
+    case WrapMode::Repeat: {
+      const int m = i % size;
+      return m < 0 ? m + size : m;
+    }
+    case WrapMode::ClampToEdge:
+      return i < 0 ? 0 : size - 1;
+    case WrapMode::MirroredRepeat: {
+      // (size - 1) - mirror((i mod 2*size) - size), mirror(n) = n >= 0 ? n : -(1 + n)
+      const int period = 2 * size;
+      int m = i % period;
+      if (m < 0) m += period;
+      const int n = m - size;
+      return (size - 1) - (n >= 0 ? n : -(1 + n));
+    }
+  }
+  return 0;
+}
+
+// One filtered sample of one level; uv must be finite.
+template <bool kFloat>
+glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decoder,
+                       const SamplerDesc& sampler, FilterMode filter, glm::vec2 uv) {
+  const int w = level.width, h = level.height;
+  if (filter == FilterMode::Nearest) {
+    // i = floor(u * size) (OpenGL 4.6 eq. 8.9, Vulkan "Unnormalized Texel Coordinate Operations")
+    const float x = texel_coord(uv.x, w, sampler.wrap_u, 0.0f);
+    const float y = texel_coord(uv.y, h, sampler.wrap_v, 0.0f);
+    const int i = wrap_texel_index(static_cast<int>(std::floor(x)), w, sampler.wrap_u);
+    const int j = wrap_texel_index(static_cast<int>(std::floor(y)), h, sampler.wrap_v);
+    return load_texel<kFloat>(level, decoder, i, j);
+  }
+  // Bilinear: i0 = floor(u * size - 0.5), alpha = frac(u * size - 0.5) (OpenGL 4.6 eq. 8.10).
+  const float x = texel_coord(uv.x, w, sampler.wrap_u, 0.5f);
+  const float y = texel_coord(uv.y, h, sampler.wrap_v, 0.5f);
+  const float x_floor = std::floor(x), y_floor = std::floor(y);
+  const float a = x - x_floor, b = y - y_floor;
+  const int i0 = static_cast<int>(x_floor), j0 = static_cast<int>(y_floor);
+  const int xa = wrap_texel_index(i0, w, sampler.wrap_u);
+  const int xb = wrap_texel_index(i0 + 1, w, sampler.wrap_u);
+  const int ya = wrap_texel_index(j0, h, sampler.wrap_v);
+  const int yb = wrap_texel_index(j0 + 1, h, sampler.wrap_v);
+  // p * (1 - t) + q * t (not p + (q - p) * t): exact at t = 0 and a correctly rounded mean at
+  // t = 0.5.
+  const glm::vec4 top = load_texel<kFloat>(level, decoder, xa, ya) * (1.0f - a) +
+                        load_texel<kFloat>(level, decoder, xb, ya) * a;
+  const glm::vec4 bottom = load_texel<kFloat>(level, decoder, xa, yb) * (1.0f - a) +
+                           load_texel<kFloat>(level, decoder, xb, yb) * a;
+  return top * (1.0f - b) + bottom * b;
+}
+
+// Filter and level selection for a level of detail lambda (bias already added), OpenGL 4.6
+// section 8.14.2-8.14.3: lambda is clamped to [0, levels - 1]; lambda <= 0 magnifies.
+template <bool kFloat>
+glm::vec4 sample_with_lambda(const std::vector<Texture2D::Level>& levels,
+                             const TexelDecoder& decoder, const SamplerDesc& sampler, glm::vec2 uv,
+                             float lambda) {
+  const float max_level = static_cast<float>(levels.size() - 1);
+  if (!(lambda > 0.0f)) {  // also NaN
+    return sample_level<kFloat>(levels[0], decoder, sampler, sampler.mag_filter, uv);
+  }
+  lambda = std::min(lambda, max_level);
+  const FilterMode filter = sampler.min_filter;
+  switch (sampler.mipmap_mode) {
+    case MipmapMode::None:
+      return sample_level<kFloat>(levels[0], decoder, sampler, filter, uv);
+    case MipmapMode::Nearest: {
+      // d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level (eq. 8.19).
+      const int d = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+      return sample_level<kFloat>(levels[d], decoder, sampler, filter, uv);
+    }
+    case MipmapMode::Linear: {
+      // Trilinear: blend levels floor(lambda) and floor(lambda) + 1 by frac(lambda) (eq. 8.20).
+      const float d1_float = std::floor(lambda);
+      const int d1 = static_cast<int>(d1_float);
+      const float blend = lambda - d1_float;
+      const glm::vec4 s1 = sample_level<kFloat>(levels[d1], decoder, sampler, filter, uv);
+      if (blend == 0.0f) return s1;
+      const glm::vec4 s2 = sample_level<kFloat>(levels[d1 + 1], decoder, sampler, filter, uv);
+      return s1 * (1.0f - blend) + s2 * blend;
+    }
+  }
+  return sample_level<kFloat>(levels[0], decoder, sampler, filter, uv);
+}
+
+// Scale factor rho of OpenGL 4.6 eq. 8.7 from the quad's finite-differenced uv, in texels of
+// level 0: rho = max(|d(uv)/dx|, |d(uv)/dy|).
+float quad_lambda(const glm::vec2 uv[4], int width, int height, float lod_bias) {
+  const glm::vec2 size(static_cast<float>(width), static_cast<float>(height));
+  const glm::vec2 d_dx = (uv[1] - uv[0]) * size;
+  const glm::vec2 d_dy = (uv[2] - uv[0]) * size;
+  const float rho = std::max(std::sqrt(d_dx.x * d_dx.x + d_dx.y * d_dx.y),
+                             std::sqrt(d_dy.x * d_dy.x + d_dy.y * d_dy.y));
+  return std::log2(rho) + lod_bias;  // rho = 0 -> -inf -> magnification
+}
+
+template <bool kFloat>
+void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
+                       const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4]) {
+  glm::vec2 finite_uv[4];
+  for (int lane = 0; lane < 4; ++lane) {
+    finite_uv[lane] = {finite_or_zero(uv[lane].x), finite_or_zero(uv[lane].y)};
+  }
+  const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
+  for (int lane = 0; lane < 4; ++lane) {
+    out[lane] = sample_with_lambda<kFloat>(levels, decoder, sampler, finite_uv[lane], lambda);
+  }
+}
+
+// Footprint of destination texel dst along one axis: 2 source texels, except that a
+// destination of an odd-sized source folds the last source texel into its last texel (3
+// texels), and a size-1 source maps 1:1. Every source texel counts once with equal weight.
+struct Footprint {
+  int first, count;
+};
+Footprint footprint(int dst, int dst_size, int src_size) {
+  if (src_size == 1) return {0, 1};
+  return {2 * dst, dst == dst_size - 1 ? src_size - 2 * dst : 2};
+}
+
+// Next mip level: each texel is the mean of its footprint (box filter; 2x2, or 3 texels
+// weighted 1/3 each along an odd axis) in linear space, re-encoded with round to nearest.
+template <TexelEncoding kEncoding>
+void downsample_into(const Texture2D::Level& src, Texture2D::Level& dst) {
+  const float* srgb = srgb8_decode_table().data();
+  for (int y = 0; y < dst.height; ++y) {
+    const Footprint fy = footprint(y, dst.height, src.height);
+    for (int x = 0; x < dst.width; ++x) {
+      const Footprint fx = footprint(x, dst.width, src.width);
+      const int texels = fx.count * fy.count;
+      double sum[kChannels] = {0.0, 0.0, 0.0, 0.0};
+      uint32_t code_sum[kChannels] = {0, 0, 0, 0};
+      for (int sy = fy.first; sy < fy.first + fy.count; ++sy) {
+        for (int sx = fx.first; sx < fx.first + fx.count; ++sx) {
+          const size_t s = (static_cast<size_t>(sy) * src.width + sx) * kChannels;
+          for (int c = 0; c < kChannels; ++c) {
+            if constexpr (kEncoding == TexelEncoding::Float32) {
+              sum[c] += src.texels32f[s + c];
+            } else if (kEncoding == TexelEncoding::Srgb8 && c < 3) {
+              sum[c] += srgb[src.texels8[s + c]];
+            } else {
+              code_sum[c] += src.texels8[s + c];
+            }
+          }
+        }
+      }
+      const size_t d = (static_cast<size_t>(y) * dst.width + x) * kChannels;
+      for (int c = 0; c < kChannels; ++c) {
+        if constexpr (kEncoding == TexelEncoding::Float32) {
+          dst.texels32f[d + c] = static_cast<float>(sum[c] / texels);
+        } else if (kEncoding == TexelEncoding::Srgb8 && c < 3) {
+          dst.texels8[d + c] = linear_to_srgb8(static_cast<float>(sum[c] / texels));
+        } else {
+          // UNORM codes are linear, so the exact mean is code_sum / texels; round half up in
+          // integers (same rule as float_to_unorm).
+          dst.texels8[d + c] = static_cast<uint8_t>((2 * code_sum[c] + texels) / (2 * texels));
+        }
+      }
+    }
+  }
+}
+
+Texture2D::Level downsample(const Texture2D::Level& src, TexelEncoding encoding) {
+  Texture2D::Level dst;
+  dst.width = std::max(1, src.width / 2);
+  dst.height = std::max(1, src.height / 2);
+  const size_t count = static_cast<size_t>(dst.width) * dst.height * kChannels;
+  switch (encoding) {
+    case TexelEncoding::Unorm8:
+      dst.texels8.resize(count);
+      downsample_into<TexelEncoding::Unorm8>(src, dst);
+      break;
+    case TexelEncoding::Srgb8:
+      dst.texels8.resize(count);
+      downsample_into<TexelEncoding::Srgb8>(src, dst);
+      break;
+    case TexelEncoding::Float32:
+      dst.texels32f.resize(count);
+      downsample_into<TexelEncoding::Float32>(src, dst);
+      break;
+  }
+  return dst;
+}
+
+std::vector<Texture2D::Level> build_mip_chain(Texture2D::Level base, TexelEncoding encoding) {
+  std::vector<Texture2D::Level> levels;
+  levels.push_back(std::move(base));
+  while (levels.back().width > 1 || levels.back().height > 1) {
+    levels.push_back(downsample(levels.back(), encoding));
+  }
+  return levels;
+}
+
+void check_size(int width, int height, size_t values, const std::string& name) {
+  const std::string label = "texture '" + name + "'";
+  if (width <= 0 || height <= 0) {
+    throw Error(label + ": invalid size " + std::to_string(width) + "x" + std::to_string(height));
+  }
+  const size_t expected = static_cast<size_t>(width) * height * kChannels;
+  if (values != expected) {
+    throw Error(label + ": " + std::to_string(values) + " texel values for " +
+                std::to_string(width) + "x" + std::to_string(height) + " RGBA (expected " +
+                std::to_string(expected) + ")");
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<const Texture2D> Texture2D::from_rgba8(int width, int height,
+                                                       std::vector<uint8_t> rgba, bool srgb,
+                                                       std::string name) {
+  check_size(width, height, rgba.size(), name);
+  std::shared_ptr<Texture2D> texture(new Texture2D());
+  texture->encoding_ = srgb ? TexelEncoding::Srgb8 : TexelEncoding::Unorm8;
+  texture->name_ = std::move(name);
+  Level base;
+  base.width = width;
+  base.height = height;
+  base.texels8 = std::move(rgba);
+  texture->levels_ = build_mip_chain(std::move(base), texture->encoding_);
+  return texture;
+}
+
+std::shared_ptr<const Texture2D> Texture2D::from_rgba32f(int width, int height,
+                                                         std::vector<float> rgba,
+                                                         std::string name) {
+  check_size(width, height, rgba.size(), name);
+  std::shared_ptr<Texture2D> texture(new Texture2D());
+  texture->encoding_ = TexelEncoding::Float32;
+  texture->name_ = std::move(name);
+  Level base;
+  base.width = width;
+  base.height = height;
+  base.texels32f = std::move(rgba);
+  texture->levels_ = build_mip_chain(std::move(base), texture->encoding_);
+  return texture;
+}
+
+int Texture2D::width(int level) const { return levels_[level].width; }
+int Texture2D::height(int level) const { return levels_[level].height; }
+int Texture2D::level_count() const { return static_cast<int>(levels_.size()); }
+TexelEncoding Texture2D::encoding() const { return encoding_; }
+const std::string& Texture2D::name() const { return name_; }
+int Texture2D::bytes_per_texel() const {
+  return encoding_ == TexelEncoding::Float32 ? 4 * static_cast<int>(sizeof(float)) : 4;
+}
+
+glm::vec4 Texture2D::fetch(int level, int x, int y) const {
+  const TexelDecoder decoder = decoder_for(encoding_);
+  if (encoding_ == TexelEncoding::Float32) return load_texel<true>(levels_[level], decoder, x, y);
+  return load_texel<false>(levels_[level], decoder, x, y);
+}
+
+glm::vec4 Texture2D::sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const {
+  const glm::vec2 finite_uv(finite_or_zero(uv.x), finite_or_zero(uv.y));
+  // The sampler's bias applies to explicit LODs too (OpenGL 4.6 eq. 8.6, Vulkan "LOD
+  // Operation"); a NaN LOD selects the base level.
+  const float lambda = lod + sampler.lod_bias;
+  const TexelDecoder decoder = decoder_for(encoding_);
+  if (encoding_ == TexelEncoding::Float32) {
+    return sample_with_lambda<true>(levels_, decoder, sampler, finite_uv, lambda);
+  }
+  return sample_with_lambda<false>(levels_, decoder, sampler, finite_uv, lambda);
+}
+
+void Texture2D::sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4],
+                            glm::vec4 out[4]) const {
+  const TexelDecoder decoder = decoder_for(encoding_);
+  if (encoding_ == TexelEncoding::Float32) {
+    sample_quad_lanes<true>(levels_, decoder, sampler, uv, out);
+  } else {
+    sample_quad_lanes<false>(levels_, decoder, sampler, uv, out);
+  }
+}
+
+}  // namespace ontile

@@ -1,0 +1,43 @@
+// glTF 2.0 loader (.gltf and .glb): decodes meshes, materials, textures, cameras and
+// KHR_lights_punctual lights of one scene of the file into an ontile::Scene.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace ontile {
+
+struct GltfLoadOptions {
+  // Which entry of the file's "scenes" to flatten; -1 picks the file's "scene" field, else
+  // scene 0, else (a file with no scenes) every root node.
+  int scene_index = -1;
+  // NaN/Inf in a POSITION accessor. true: the load fails with an error naming the accessor.
+  // false: the file loads as it is (the rasterizer drops triangles with non-finite corners at
+  // render time and counts them) and GltfLoadStats::non_finite_positions reports how many
+  // vertices were affected, so the caller can warn.
+  bool reject_non_finite_positions = true;
+};
+
+// What the loader met on the way that the Scene itself does not show.
+struct GltfLoadStats {
+  uint64_t skipped_point_primitives = 0;  // mode POINTS: not drawn by a triangle rasterizer
+  uint64_t skipped_line_primitives = 0;   // modes LINES, LINE_LOOP, LINE_STRIP
+  uint64_t non_finite_positions = 0;      // vertices whose POSITION has a NaN/Inf component
+  // Primitives without NORMAL: they got flat normals (glTF 2.0 spec 3.7.2.1) and were
+  // de-indexed so each triangle has its own three vertices.
+  uint64_t primitives_with_generated_normals = 0;
+  // Non-fatal notes: tinygltf warnings and things the loader ignored, one line each.
+  std::vector<std::string> warnings;
+};
+
+// Loads `path` (binary when the file starts with the GLB magic "glTF", else JSON). Throws
+// ontile::Error with a one-line message "PATH: problem" on any failure: unreadable or invalid
+// file, missing buffer or image file, out-of-range accessor or index, unsupported required
+// extension, scene index out of range, and (by default) non-finite positions.
+Scene load_gltf(const std::filesystem::path& path, const GltfLoadOptions& options = {},
+                GltfLoadStats* stats = nullptr);
+
+}  // namespace ontile
