@@ -39,6 +39,16 @@ void LambertShader::shade(const QuadFragment& quad, QuadOutput& out) const {
     material_.base_color_texture.texture->sample_quad(material_.base_color_texture.sampler, uv, texel);
     for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
   }
+  // glTF 2.0 3.9.3: emissive = emissiveFactor x emissiveTexture (sRGB).
+  glm::vec3 emissive[kQuadLanes];
+  for (int lane = 0; lane < kQuadLanes; ++lane) emissive[lane] = material_.emissive_factor;
+  if (material_.emissive_texture.texture && material_.emissive_factor != glm::vec3(0.0f)) {
+    glm::vec2 uv[kQuadLanes];
+    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(MeshVertexShader::kUv, lane);
+    glm::vec4 texel[kQuadLanes];
+    material_.emissive_texture.texture->sample_quad(material_.emissive_texture.sampler, uv, texel);
+    for (int lane = 0; lane < kQuadLanes; ++lane) emissive[lane] *= glm::vec3(texel[lane]);
+  }
   for (int lane = 0; lane < kQuadLanes; ++lane) {
     if (!quad.lane_active(lane)) continue;
     if (alpha_mask_ && albedo[lane].w < material_.alpha_cutoff) {
@@ -51,7 +61,7 @@ void LambertShader::shade(const QuadFragment& quad, QuadOutput& out) const {
     if (!quad.front_facing) n = -n;  // back faces are seen only on double-sided materials
     const float n_dot_l = glm::max(glm::dot(n, lighting_.to_light), 0.0f);
     const glm::vec3 rgb = glm::vec3(albedo[lane]) * (lighting_.ambient + lighting_.radiance * n_dot_l) +
-                          material_.emissive_factor;
+                          emissive[lane];
     out.color[0][lane] = glm::vec4(rgb, albedo[lane].w);
   }
 }
