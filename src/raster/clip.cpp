@@ -34,12 +34,15 @@ inline float plane_distance(int plane, const glm::vec4& v, const GuardBand& g) {
   }
 }
 
+// Straight-line form of plane_distance() < 0 for every plane (NaN counts as outside); this
+// runs for every vertex of every triangle, so it avoids the per-plane switch.
 unsigned outcode(const glm::vec4& v, const GuardBand& g) {
-  unsigned code = 0;
-  for (int p = 0; p < kPlaneCount; ++p) {
-    if (!(plane_distance(p, v, g) >= 0.0f)) code |= 1u << p;
-  }
-  return code;
+  auto out = [](float d, int plane) { return d >= 0.0f ? 0u : 1u << plane; };
+  return out(v.z, kNear) | out(v.w - v.z, kFar) | out(v.w - kMinW, kPositiveW) |
+         out(g.x_max * v.w - v.x, kGuardRight) | out(v.x - g.x_min * v.w, kGuardLeft) |
+         out(v.y - g.y_min * v.w, kGuardBottom) | out(g.y_max * v.w - v.y, kGuardTop) |
+         out(v.w - v.x, kViewRight) | out(v.x + v.w, kViewLeft) | out(v.y + v.w, kViewBottom) |
+         out(v.w - v.y, kViewTop);
 }
 
 void clip_against_plane(int plane, int varying_count, const GuardBand& g, ClipPolygon& poly,

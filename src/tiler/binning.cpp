@@ -14,7 +14,6 @@ namespace ontile {
 namespace {
 
 constexpr uint32_t kVertexGrain = 2048;
-constexpr uint32_t kTriangleChunk = 4096;
 
 struct ShadedDraw {
   int varying_count = 0;
@@ -64,8 +63,8 @@ struct Chunk {
   uint32_t subpass = 0, draw = 0;
   uint32_t first_triangle = 0, triangle_count = 0;
   // Outputs.
-  std::vector<BinnedTriangle> triangles;
-  std::vector<float> varyings;
+  std::vector<BinnedTriangle>& triangles;
+  std::vector<float>& varyings;
   std::vector<uint32_t> entry_tile;      // tile of each (tile, triangle) pair
   std::vector<uint32_t> entry_triangle;  // chunk-local triangle of each pair
   GeometryCounters counters;
@@ -127,6 +126,10 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
   const int n = shaded.varying_count;
   const uint32_t vertex_bytes = post_transform_vertex_bytes(n);
   GeometryCounters& c = chunk.counters;
+  chunk.triangles.reserve(chunk.triangle_count);
+  chunk.varyings.reserve(static_cast<size_t>(chunk.triangle_count) * 3 * n);
+  chunk.entry_tile.reserve(chunk.triangle_count * 2);
+  chunk.entry_triangle.reserve(chunk.triangle_count * 2);
   ClipPolygon polygon;
   for (uint32_t tri = chunk.first_triangle; tri < chunk.first_triangle + chunk.triangle_count;
        ++tri) {
@@ -199,7 +202,10 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
 
   // Vertex shading and per-draw fetch traffic.
   std::vector<std::vector<ShadedDraw>> shaded(pass.subpasses.size());
-  std::vector<Chunk> chunks;
+  struct ChunkInput {
+    uint32_t subpass, draw, first_triangle, triangle_count;
+  };
+  std::vector<ChunkInput> inputs;
   for (uint32_t s = 0; s < pass.subpasses.size(); ++s) {
     for (uint32_t d = 0; d < pass.subpasses[s].draws.size(); ++d) {
       const DrawCall& draw = pass.subpasses[s].draws[d];
@@ -214,60 +220,46 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
       pb.counters.parameter_bytes_written +=
           unique * post_transform_vertex_bytes(shaded[s].back().varying_count);
       const uint32_t triangles = draw.index_count / 3;
-      for (uint32_t first = 0; first < triangles; first += kTriangleChunk) {
-        Chunk c;
-        c.subpass = s;
-        c.draw = d;
-        c.first_triangle = first;
-        c.triangle_count = std::min(kTriangleChunk, triangles - first);
-        chunks.push_back(std::move(c));
+      for (uint32_t first = 0; first < triangles; first += kTrianglesPerChunk) {
+        inputs.push_back({s, d, first, std::min(kTrianglesPerChunk, triangles - first)});
       }
     }
   }
 
+  if (inputs.size() >= (size_t{1} << (32 - kChunkLocalBits))) {
+    throw Error("pass '" + pass.name + "': too many triangles for one parameter buffer");
+  }
+  pb.chunks.resize(inputs.size());
+  std::vector<Chunk> chunks;
+  chunks.reserve(inputs.size());
+  for (size_t i = 0; i < inputs.size(); ++i) {
+    chunks.push_back(Chunk{inputs[i].subpass, inputs[i].draw, inputs[i].first_triangle,
+                           inputs[i].triangle_count, pb.chunks[i].triangles,
+                           pb.chunks[i].varyings, {}, {}, {}});
+  }
   tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
     Chunk& c = chunks[i];
     process_chunk(pass.subpasses[c.subpass].draws[c.draw], shaded[c.subpass][c.draw], grid, guard,
                   c);
   });
   shaded.clear();
+  for (const Chunk& c : chunks) pb.counters.add(c.counters);
 
-  // Concatenate chunk outputs in submission order.
-  std::vector<uint64_t> triangle_base(chunks.size() + 1, 0), varying_base(chunks.size() + 1, 0);
-  for (size_t i = 0; i < chunks.size(); ++i) {
-    triangle_base[i + 1] = triangle_base[i] + chunks[i].triangles.size();
-    varying_base[i + 1] = varying_base[i] + chunks[i].varyings.size();
-    pb.counters.add(chunks[i].counters);
-  }
-  if (varying_base.back() > UINT32_MAX || triangle_base.back() > UINT32_MAX) {
-    throw Error("pass '" + pass.name + "': parameter buffer exceeds 2^32 entries");
-  }
-  pb.triangles.resize(triangle_base.back());
-  pb.varyings.resize(varying_base.back());
-  tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
-    Chunk& c = chunks[i];
-    for (size_t t = 0; t < c.triangles.size(); ++t) {
-      BinnedTriangle bt = c.triangles[t];
-      bt.varying_offset += static_cast<uint32_t>(varying_base[i]);
-      pb.triangles[triangle_base[i] + t] = bt;
-    }
-    std::copy(c.varyings.begin(), c.varyings.end(), pb.varyings.begin() + varying_base[i]);
-  });
-
-  // Per-tile lists (CSR) by a stable counting sort of the (tile, triangle) pairs.
+  // Per-tile lists (CSR) by a stable counting sort of the (tile, triangle) pairs, which the
+  // chunks hold in submission order.
   const int tile_count = grid.tile_count();
   pb.tile_offsets.assign(tile_count + 1, 0);
   for (const Chunk& c : chunks) {
     for (uint32_t tile : c.entry_tile) ++pb.tile_offsets[tile + 1];
   }
   for (int t = 0; t < tile_count; ++t) pb.tile_offsets[t + 1] += pb.tile_offsets[t];
-  pb.tile_triangles.resize(pb.tile_offsets.back());
+  pb.tile_entries.resize(pb.tile_offsets.back());
   std::vector<uint32_t> cursor(pb.tile_offsets.begin(), pb.tile_offsets.end() - 1);
   for (size_t i = 0; i < chunks.size(); ++i) {
     const Chunk& c = chunks[i];
+    const uint32_t chunk_bits = static_cast<uint32_t>(i) << kChunkLocalBits;
     for (size_t e = 0; e < c.entry_tile.size(); ++e) {
-      pb.tile_triangles[cursor[c.entry_tile[e]]++] =
-          static_cast<uint32_t>(triangle_base[i] + c.entry_triangle[e]);
+      pb.tile_entries[cursor[c.entry_tile[e]]++] = chunk_bits | c.entry_triangle[e];
     }
   }
   return pb;

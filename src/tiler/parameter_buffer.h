@@ -13,8 +13,8 @@ namespace ontile {
 
 struct BinnedTriangle {
   TriangleSetup setup;
-  uint32_t varying_offset = 0;  // into ParameterBuffer::varyings: 3 * varying_count floats,
-                                // in setup slot order
+  uint32_t varying_offset = 0;  // into its chunk's varyings: 3 * varying_count floats, in
+                                // setup slot order
   uint32_t subpass = 0;
   uint32_t draw = 0;            // index into the subpass's draws
   uint32_t primitive_id = 0;
@@ -36,15 +36,32 @@ inline uint32_t post_transform_vertex_bytes(int varying_count) {
   return kPositionBytes + 4u * static_cast<uint32_t>(varying_count);
 }
 
-struct ParameterBuffer {
-  TileGrid grid;
+// The triangles set up from one run of consecutive input triangles of a draw. Binning works
+// chunk by chunk in parallel and the chunks stay where they were built (no merge copy).
+struct TriangleChunk {
   std::vector<BinnedTriangle> triangles;
   std::vector<float> varyings;
-  std::vector<uint32_t> tile_offsets;    // tile_count + 1 entries
-  std::vector<uint32_t> tile_triangles;  // triangle indices, per tile in submission order
+};
+
+// A tile-list entry names a triangle as (chunk << kChunkLocalBits) | index within the chunk.
+// A chunk holds at most kTrianglesPerChunk inputs, each clipped into at most
+// ClipPolygon::kMaxVertices - 2 triangles, which stays below 2^kChunkLocalBits.
+constexpr uint32_t kChunkLocalBits = 16;
+constexpr uint32_t kTrianglesPerChunk = 4096;
+
+struct ParameterBuffer {
+  TileGrid grid;
+  std::vector<TriangleChunk> chunks;
+  std::vector<uint32_t> tile_offsets;  // tile_count + 1 entries
+  std::vector<uint32_t> tile_entries;  // triangle references, per tile in submission order
   GeometryCounters counters;
 
-  uint32_t tile_triangle_count(int tile) const { return tile_offsets[tile + 1] - tile_offsets[tile]; }
+  const BinnedTriangle& triangle(uint32_t ref) const {
+    return chunks[ref >> kChunkLocalBits].triangles[ref & ((1u << kChunkLocalBits) - 1)];
+  }
+  const float* varyings(uint32_t ref, const BinnedTriangle& t) const {
+    return chunks[ref >> kChunkLocalBits].varyings.data() + t.varying_offset;
+  }
 };
 
 // Runs the geometry phase of a pass: vertex shading, primitive assembly, NaN/Inf rejection,

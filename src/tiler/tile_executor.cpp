@@ -167,14 +167,15 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   const SamplePattern& pattern = *standard_sample_pattern(pass.samples);
   const PixelRect pixel_rect{rect.x0, rect.y0, rect.x0 + rect.width, rect.y0 + rect.height};
   for (uint32_t e = begin; e < end; ++e) {
-    const BinnedTriangle& tri = params.triangles[params.tile_triangles[e]];
+    const uint32_t ref = params.tile_entries[e];
+    const BinnedTriangle& tri = params.triangle(ref);
     const SubpassDesc& subpass = pass.subpasses[tri.subpass];
     const DrawCall& draw = subpass.draws[tri.draw];
     const int n = draw.vertex_shader->varying_count();
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
     const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
-    const TriangleContext ctx{pass, subpass, draw, tri, params.varyings.data() + tri.varying_offset,
+    const TriangleContext ctx{pass, subpass, draw, tri, params.varyings(ref, tri),
                               n, pattern, rect, &fetch};
     rasterize_quads(tri.setup, pattern, pixel_rect, [&](int qx, int qy, QuadCoverage coverage) {
       shade_and_write_quad(ctx, qx, qy, coverage, memory, counters);
