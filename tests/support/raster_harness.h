@@ -60,9 +60,10 @@ struct CountResult {
 };
 
 // Draws the triangles with cull mode None, no depth, additive blending into R32F.
+// With samples > 1 the target is resolved, so counts are the covered fraction of samples.
 inline CountResult draw_counting(const std::vector<glm::vec4>& positions,
                                  const std::vector<uint32_t>& indices, int width, int height,
-                                 int tile_size_px = 16, int threads = 2) {
+                                 int tile_size_px = 16, int threads = 2, int samples = 1) {
   ContextConfig cfg;
   cfg.threads = threads;
   cfg.tiler.tile_size_px = tile_size_px;
@@ -70,9 +71,14 @@ inline CountResult draw_counting(const std::vector<glm::vec4>& positions,
   Surface* target = ctx.create_surface("count", PixelFormat::R32_FLOAT, width, height);
   ClipSpaceVertexShader vs(positions, {}, 0);
   ConstantOneShader fs;
-  ctx.begin_render_pass("count", width, height, 1,
-                        {{"count", PixelFormat::R32_FLOAT, LoadAction::Clear, StoreAction::Store,
-                          glm::vec4(0.0f), target, nullptr}}, -1);
+  AttachmentDesc count{"count", PixelFormat::R32_FLOAT, LoadAction::Clear, StoreAction::Store,
+                       glm::vec4(0.0f), target, nullptr};
+  if (samples > 1) {
+    count.surface = nullptr;
+    count.resolve_surface = target;
+    count.store = StoreAction::Resolve;
+  }
+  ctx.begin_render_pass("count", width, height, samples, {count}, -1);
   ctx.begin_subpass({0});
   DrawCall d;
   d.vertex_shader = &vs;
