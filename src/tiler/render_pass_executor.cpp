@@ -1,6 +1,7 @@
 // Render pass execution (see render_pass_executor.h).
 #include "tiler/render_pass_executor.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <tbb/combinable.h>
@@ -70,10 +71,44 @@ void validate(const RenderPassDesc& pass) {
   if (pass.depth_index >= static_cast<int>(pass.attachments.size())) {
     invalid(pass, "depth attachment index out of range");
   }
+  // What the tile holds at the start of a subpass: loaded attachments and whatever earlier
+  // subpasses wrote (Vulkan 8.1: an input attachment must have defined contents).
+  const int attachment_count = static_cast<int>(pass.attachments.size());
+  std::vector<bool> defined(pass.attachments.size(), false);
+  for (int a = 0; a < attachment_count; ++a) {
+    defined[a] = pass.attachments[a].load != LoadAction::DontCare;
+  }
   for (size_t s = 0; s < pass.subpasses.size(); ++s) {
-    for (int a : pass.subpasses[s].color_outputs) {
-      if (a < 0 || a >= static_cast<int>(pass.attachments.size()) || a == pass.depth_index) {
-        invalid(pass, "subpass " + std::to_string(s) + " writes invalid attachment " + std::to_string(a));
+    const SubpassDesc& sub = pass.subpasses[s];
+    const std::string where = "subpass " + std::to_string(s);
+    if (sub.color_outputs.size() > static_cast<size_t>(kMaxColorTargets)) {
+      invalid(pass, where + " has " + std::to_string(sub.color_outputs.size()) +
+                        " colour outputs (at most " + std::to_string(kMaxColorTargets) + ")");
+    }
+    for (int a : sub.color_outputs) {
+      if (a < 0 || a >= attachment_count || a == pass.depth_index) {
+        invalid(pass, where + " writes invalid attachment " + std::to_string(a));
+      }
+    }
+    for (int a : sub.inputs) {
+      if (a < 0 || a >= attachment_count) {
+        invalid(pass, where + " reads invalid attachment " + std::to_string(a));
+      }
+      const std::string& name = pass.attachments[a].name;
+      if (std::find(sub.color_outputs.begin(), sub.color_outputs.end(), a) != sub.color_outputs.end()) {
+        invalid(pass, where + " writes its input attachment '" + name + "'");
+      }
+      if (a == pass.depth_index && !sub.depth_read_only && !sub.draws.empty()) {
+        invalid(pass, where + " reads depth '" + name + "' as an input but does not declare depth read-only");
+      }
+      if (!defined[a]) {
+        invalid(pass, where + " reads '" + name + "', which no earlier subpass wrote and which is not loaded or cleared");
+      }
+    }
+    for (int a : sub.color_outputs) defined[a] = true;
+    if (pass.depth_index >= 0 && !sub.depth_read_only) {
+      for (const DrawCall& d : sub.draws) {
+        if (d.raster.depth_write) defined[pass.depth_index] = true;
       }
     }
     for (const DrawCall& d : pass.subpasses[s].draws) {

@@ -6,6 +6,7 @@
 
 #include "raster/rasterize.h"
 #include "tiler/tile_load_store.h"
+#include "util/error.h"
 
 namespace ontile {
 namespace {
@@ -18,6 +19,10 @@ class TileFetch final : public FramebufferFetch {
             int depth_index)
       : memory_(memory), rect_(rect), inputs_(inputs), depth_index_(depth_index) {}
   glm::vec4 load(int input_slot, int x_px, int y_px, int sample) const override {
+    if (input_slot < 0 || input_slot >= static_cast<int>(inputs_.size())) {
+      throw Error("framebuffer fetch of input slot " + std::to_string(input_slot) +
+                  ", but the subpass declares " + std::to_string(inputs_.size()) + " inputs");
+    }
     const int attachment = inputs_[input_slot];
     const size_t i = memory_.index(x_px - rect_.x0, y_px - rect_.y0, sample);
     if (attachment == depth_index_) return {memory_.depth_plane()[i], 0.0f, 0.0f, 1.0f};
