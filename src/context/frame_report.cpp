@@ -20,7 +20,7 @@ uint64_t FrameReport::bytes_written() const {
 
 std::map<std::string, uint64_t> FrameReport::bytes_by_category() const {
   std::map<std::string, uint64_t> c{{"attachment_load", 0}, {"attachment_store", 0},
-                                    {"resolve", 0}, {"vertex_index", 0},
+                                    {"resolve", 0}, {"vertex_index", 0}, {"texture", 0},
                                     {"parameter_buffer_write", 0}, {"parameter_buffer_read", 0}};
   for (const PassReport& p : passes) {
     for (const AttachmentTraffic& a : p.attachments) {
@@ -29,6 +29,7 @@ std::map<std::string, uint64_t> FrameReport::bytes_by_category() const {
       c["resolve"] += a.bytes_resolved;
     }
     c["vertex_index"] += p.geometry.index_bytes_read + p.geometry.vertex_bytes_read;
+    c["texture"] += p.texture.bytes_read;
     c["parameter_buffer_write"] += p.geometry.parameter_bytes_written;
     c["parameter_buffer_read"] += p.tiles.parameter_bytes_read;
   }
@@ -62,6 +63,7 @@ nlohmann::json pass_json(const PassReport& p) {
   }
   const uint64_t pixels = static_cast<uint64_t>(p.width_px) * p.height_px;
   return {{"name", p.name},
+          {"architecture", p.architecture},
           {"width_px", p.width_px},
           {"height_px", p.height_px},
           {"samples", p.samples},
@@ -75,6 +77,10 @@ nlohmann::json pass_json(const PassReport& p) {
           {"parameter_buffer", {{"bytes_written", p.geometry.parameter_bytes_written},
                                 {"bytes_read", p.tiles.parameter_bytes_read}}},
           {"vertex_index_bytes_read", p.geometry.index_bytes_read + p.geometry.vertex_bytes_read},
+          {"texture", {{"accesses", p.texture.accesses}, {"hits", p.texture.hits},
+                       {"misses", p.texture.misses}, {"bytes_read", p.texture.bytes_read}}},
+          {"render_target_cache", {{"hits", p.render_target_cache_hits},
+                                   {"misses", p.render_target_cache_misses}}},
           {"fragments_shaded", p.tiles.fragments_shaded},
           {"fragments_depth_rejected", p.tiles.fragments_depth_rejected},
           {"overdraw", pixels ? static_cast<double>(p.tiles.fragments_shaded) / pixels : 0.0},

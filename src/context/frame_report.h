@@ -20,7 +20,7 @@ struct FrameReport {
   uint64_t bytes_read() const;
   uint64_t bytes_written() const;
   // Bytes per traffic category ("attachment_load", "attachment_store", "resolve",
-  // "vertex_index", "parameter_buffer_write", "parameter_buffer_read").
+  // "vertex_index", "texture", "parameter_buffer_write", "parameter_buffer_read").
   std::map<std::string, uint64_t> bytes_by_category() const;
 };
 

@@ -1,13 +1,14 @@
-// The render context pipelines talk to: it owns render-target surfaces, records render passes,
-// subpasses and draws, and executes nothing until submit(), which runs the recorded passes in
-// order on the tiler and returns the frame's traffic report.
+// The render context pipelines talk to (Unity's ScriptableRenderContext): it owns render
+// targets, culls renderers, records render passes, draws and command buffers, and executes
+// nothing until submit(), which runs everything in recorded order on the tiler and returns
+// the frame's traffic report.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "context/command_buffer.h"
 #include "context/frame_report.h"
-#include "tiler/render_pass.h"
 #include "tiler/render_pass_executor.h"
 
 namespace ontile {
@@ -17,22 +18,54 @@ struct ContextConfig {
   TilerConfig tiler;
 };
 
-class RenderContext {
+// Temporary render targets, pooled by descriptor across frames of one context.
+struct RenderTargetPool {
+  struct Entry {
+    RenderTargetDesc desc;
+    std::unique_ptr<Surface> surface;
+    bool in_use = false;
+  };
+  std::vector<Entry> entries;
+  Surface* acquire(const RenderTargetDesc& desc, const std::string& name);
+  void release(Surface* surface);
+};
+
+class RenderContext : private CommandBuffer {
  public:
   explicit RenderContext(ContextConfig config = {});
 
-  // A render target in external memory, owned by the context for its lifetime.
+  // A persistent render target in external memory, owned by the context.
   Surface* create_surface(const std::string& name, PixelFormat format, int width_px,
                           int height_px, int samples = 1);
 
+  // Explicit render passes (Vulkan-style); attachments with no surface are transient.
   void begin_render_pass(const std::string& name, int width_px, int height_px, int samples,
                          std::vector<AttachmentDesc> attachments, int depth_index);
   void begin_subpass(std::vector<int> color_outputs, std::vector<int> inputs = {},
                      bool depth_read_only = false);
-  // Shaders referenced by the draw must outlive submit().
+  // A draw with pre-built functors; they must outlive submit().
   void draw(const DrawCall& draw);
   void end_subpass();
   void end_render_pass();
+
+  CullingResults cull(const std::vector<Renderer>& renderers, const CameraMatrices& camera,
+                      const CullingParameters& params = {}) const;
+  void draw_renderers(const CullingResults& culling, const DrawingSettings& drawing,
+                      const FilteringSettings& filtering);
+  void draw_skybox(const CameraMatrices& camera);
+  void execute_command_buffer(const CommandBuffer& buffer);
+  // The recording API of command buffers is available on the context too.
+  using CommandBuffer::blit;
+  using CommandBuffer::clear_render_target;
+  using CommandBuffer::draw_mesh;
+  using CommandBuffer::get_temporary_rt;
+  using CommandBuffer::release_temporary_rt;
+  using CommandBuffer::set_global_float;
+  using CommandBuffer::set_global_matrix;
+  using CommandBuffer::set_global_texture;
+  using CommandBuffer::set_global_vector;
+  using CommandBuffer::set_render_target;
+  using CommandBuffer::set_view_projection;
 
   // Executes everything recorded since the last submit, in recorded order.
   FrameReport submit();
@@ -41,7 +74,7 @@ class RenderContext {
  private:
   ContextConfig config_;
   std::vector<std::unique_ptr<Surface>> surfaces_;
-  std::vector<RenderPassDesc> recorded_;
+  RenderTargetPool pool_;
   bool in_pass_ = false, in_subpass_ = false;
 };
 

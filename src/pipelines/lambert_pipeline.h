@@ -9,7 +9,8 @@ class LambertPipeline final : public Pipeline {
  public:
   std::string name() const override { return "lambert"; }
   std::string description() const override {
-    return "forward Lambert shading, one pass: colour RGBA8 sRGB + depth D32F (transient)";
+    return "forward Lambert shading, one pass: colour RGBA8 sRGB + depth D32F (transient), "
+           "culled and sorted by draw_renderers";
   }
   FrameOutputs render(RenderContext& context, const FrameInputs& inputs) override;
 };

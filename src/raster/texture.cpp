@@ -1,13 +1,15 @@
 // Texture2D: mip chain construction and the sampler (OpenGL 4.6 sections 8.14-8.15, Vulkan
 // "Texel Filtering" / "Wrapping Operation"). Sampling is on the per-fragment hot path: no
-// allocation, encoding dispatched once per call, texel address = (y * width + x) * 4.
+// allocation, encoding dispatched once per call, every texel read reported to the texel trace.
 #include "raster/texture.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 
 #include "raster/pixel_format.h"
+#include "raster/texel_trace.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -17,17 +19,26 @@ constexpr int kChannels = 4;
 // Beyond 2^24 every float is an integer, so reducing texel coordinates there (exact fmod, or a
 // clamp for ClampToEdge) keeps the selected texel and keeps indices far from int overflow.
 constexpr float kMaxExactTexelCoord = 16777216.0f;
+// Textures start on 4 KiB boundaries of the simulated address space (a page, as allocators do).
+constexpr uint64_t kTextureAlignmentBytes = 4096;
+// Next free simulated address. Textures are created serially (loading, pipeline setup), so
+// creation order, and with it every address, is the same on every run.
+std::atomic<uint64_t> next_texture_address{0};
 
-// Per-channel decode tables for 8-bit texels; unused for Float32.
+// Per-channel decode tables for 8-bit texels (unused for Float32), and whether a texel trace
+// is active on this thread: looked up once per sampling call, since a thread_local read on
+// every texel measurably slows sampling when nothing is traced.
 struct TexelDecoder {
   const float* rgb = nullptr;
   const float* alpha = nullptr;
+  bool trace = false;
 };
 
 TexelDecoder decoder_for(TexelEncoding encoding) {
   const float* unorm = unorm8_decode_table().data();
-  if (encoding == TexelEncoding::Srgb8) return {srgb8_decode_table().data(), unorm};
-  return {unorm, unorm};
+  const bool trace = texel_trace_detail::sink != nullptr;
+  if (encoding == TexelEncoding::Srgb8) return {srgb8_decode_table().data(), unorm, trace};
+  return {unorm, unorm, trace};
 }
 
 // Non-finite coordinates are treated as 0 so that NaN/Inf uv can never index out of bounds.
@@ -36,7 +47,9 @@ inline float finite_or_zero(float x) { return std::isfinite(x) ? x : 0.0f; }
 template <bool kFloat>
 inline glm::vec4 load_texel(const Texture2D::Level& level, const TexelDecoder& decoder, int x,
                             int y) {
-  const size_t index = (static_cast<size_t>(y) * level.width + x) * kChannels;
+  const size_t texel = static_cast<size_t>(y) * level.width + x;
+  if (decoder.trace) record_texel_address(level.address + texel * level.memory_bytes_per_texel);
+  const size_t index = texel * kChannels;
   if constexpr (kFloat) {
     const float* p = level.texels32f.data() + index;
     return {p[0], p[1], p[2], p[3]};
@@ -104,12 +117,15 @@ glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decode
   const int xb = wrap_texel_index(i0 + 1, w, sampler.wrap_u);
   const int ya = wrap_texel_index(j0, h, sampler.wrap_v);
   const int yb = wrap_texel_index(j0 + 1, h, sampler.wrap_v);
-  // p * (1 - t) + q * t (not p + (q - p) * t): exact at t = 0 and a correctly rounded mean at
-  // t = 0.5.
-  const glm::vec4 top = load_texel<kFloat>(level, decoder, xa, ya) * (1.0f - a) +
-                        load_texel<kFloat>(level, decoder, xb, ya) * a;
-  const glm::vec4 bottom = load_texel<kFloat>(level, decoder, xa, yb) * (1.0f - a) +
-                           load_texel<kFloat>(level, decoder, xb, yb) * a;
+  // Loads in separate statements so the texel trace sees a fixed order (operand evaluation
+  // order inside one expression is unspecified). p * (1 - t) + q * t (not p + (q - p) * t):
+  // exact at t = 0 and a correctly rounded mean at t = 0.5.
+  const glm::vec4 t00 = load_texel<kFloat>(level, decoder, xa, ya);
+  const glm::vec4 t10 = load_texel<kFloat>(level, decoder, xb, ya);
+  const glm::vec4 t01 = load_texel<kFloat>(level, decoder, xa, yb);
+  const glm::vec4 t11 = load_texel<kFloat>(level, decoder, xb, yb);
+  const glm::vec4 top = t00 * (1.0f - a) + t10 * a;
+  const glm::vec4 bottom = t01 * (1.0f - a) + t11 * a;
   return top * (1.0f - b) + bottom * b;
 }
 
@@ -282,6 +298,7 @@ std::shared_ptr<const Texture2D> Texture2D::from_rgba8(int width, int height,
   base.height = height;
   base.texels8 = std::move(rgba);
   texture->levels_ = build_mip_chain(std::move(base), texture->encoding_);
+  texture->assign_addresses(texture->bytes_per_texel());
   return texture;
 }
 
@@ -297,7 +314,38 @@ std::shared_ptr<const Texture2D> Texture2D::from_rgba32f(int width, int height,
   base.height = height;
   base.texels32f = std::move(rgba);
   texture->levels_ = build_mip_chain(std::move(base), texture->encoding_);
+  texture->assign_addresses(texture->bytes_per_texel());
   return texture;
+}
+
+std::shared_ptr<const Texture2D> Texture2D::from_surface_texels(int width, int height,
+                                                                std::vector<float> rgba,
+                                                                int memory_bytes_per_texel,
+                                                                std::string name) {
+  check_size(width, height, rgba.size(), name);
+  if (memory_bytes_per_texel <= 0) {
+    throw Error("texture '" + name + "': invalid memory_bytes_per_texel " +
+                std::to_string(memory_bytes_per_texel));
+  }
+  std::shared_ptr<Texture2D> texture(new Texture2D());
+  texture->encoding_ = TexelEncoding::Float32;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, {}, std::move(rgba)});
+  texture->assign_addresses(memory_bytes_per_texel);
+  return texture;
+}
+
+void Texture2D::assign_addresses(int memory_bytes_per_texel) {
+  uint64_t size_bytes = 0;
+  for (Level& level : levels_) {
+    level.address = size_bytes;  // offset for now; the base is added once reserved
+    level.memory_bytes_per_texel = static_cast<uint32_t>(memory_bytes_per_texel);
+    size_bytes += static_cast<uint64_t>(level.width) * level.height * memory_bytes_per_texel;
+  }
+  const uint64_t reserved_bytes =
+      (size_bytes + kTextureAlignmentBytes - 1) / kTextureAlignmentBytes * kTextureAlignmentBytes;
+  base_address_ = next_texture_address.fetch_add(reserved_bytes);
+  for (Level& level : levels_) level.address += base_address_;
 }
 
 int Texture2D::width(int level) const { return levels_[level].width; }
@@ -307,6 +355,18 @@ TexelEncoding Texture2D::encoding() const { return encoding_; }
 const std::string& Texture2D::name() const { return name_; }
 int Texture2D::bytes_per_texel() const {
   return encoding_ == TexelEncoding::Float32 ? 4 * static_cast<int>(sizeof(float)) : 4;
+}
+
+uint64_t Texture2D::base_address() const { return base_address_; }
+uint64_t Texture2D::level_offset_bytes(int level) const {
+  return levels_[level].address - base_address_;
+}
+int Texture2D::memory_bytes_per_texel() const {
+  return static_cast<int>(levels_[0].memory_bytes_per_texel);
+}
+uint64_t Texture2D::texel_address(int level, int x, int y) const {
+  const Level& l = levels_[level];
+  return l.address + (static_cast<uint64_t>(y) * l.width + x) * l.memory_bytes_per_texel;
 }
 
 glm::vec4 Texture2D::fetch(int level, int x, int y) const {

@@ -1,5 +1,6 @@
 // 2D textures with full mip chains and the sampler a fragment shader uses: nearest, bilinear
-// and trilinear filtering, repeat/clamp/mirror wrapping, LOD from 2x2-quad derivatives.
+// and trilinear filtering, repeat/clamp/mirror wrapping, LOD from 2x2-quad derivatives, and
+// each texture's place in the simulated address space the texture-cache model sees.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -38,6 +39,14 @@ class Texture2D {
   static std::shared_ptr<const Texture2D> from_rgba32f(int width, int height,
                                                        std::vector<float> rgba,
                                                        std::string name = {});
+  // A render-target snapshot used as a texture: Float32 storage but `memory_bytes_per_texel`
+  // bytes per texel in simulated memory (the target's real format, e.g. 4 for RGBA8), and a
+  // single level (render targets have no mip chain, so every mip mode samples level 0).
+  // Throws Error (naming `name`) on a bad size or memory_bytes_per_texel <= 0.
+  static std::shared_ptr<const Texture2D> from_surface_texels(int width, int height,
+                                                              std::vector<float> rgba,
+                                                              int memory_bytes_per_texel,
+                                                              std::string name);
 
   int width(int level = 0) const;
   int height(int level = 0) const;
@@ -46,6 +55,16 @@ class Texture2D {
   const std::string& name() const;
   // Bytes one texel occupies in memory (4 for 8-bit encodings, 16 for Float32).
   int bytes_per_texel() const;
+
+  // Simulated memory layout (for the texture-cache model): each texture is given, at
+  // creation, a 4 KiB-aligned range of a process-wide address space, textures one after
+  // another in creation order, levels one after another inside it. Sampling reports the byte
+  // address of every texel it reads to the thread's texel trace (raster/texel_trace.h).
+  uint64_t base_address() const;
+  uint64_t level_offset_bytes(int level) const;  // prefix sum of the sizes of levels < level
+  int memory_bytes_per_texel() const;            // bytes_per_texel() unless a surface snapshot
+  // base + level offset + (y * width + x) * memory_bytes_per_texel.
+  uint64_t texel_address(int level, int x, int y) const;
 
   // One texel, decoded to linear float. x, y must be inside the level.
   glm::vec4 fetch(int level, int x, int y) const;
@@ -62,6 +81,8 @@ class Texture2D {
     int width = 0, height = 0;
     std::vector<uint8_t> texels8;  // Unorm8/Srgb8
     std::vector<float> texels32f;  // Float32
+    uint64_t address = 0;          // simulated byte address of texel (0, 0)
+    uint32_t memory_bytes_per_texel = 4;
   };
 
  private:
@@ -69,6 +90,10 @@ class Texture2D {
   std::vector<Level> levels_;
   TexelEncoding encoding_ = TexelEncoding::Unorm8;
   std::string name_;
+  uint64_t base_address_ = 0;
+
+  // Gives the levels their addresses: reserves this texture's range of the address space.
+  void assign_addresses(int memory_bytes_per_texel);
 };
 
 }  // namespace ontile

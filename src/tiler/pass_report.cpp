@@ -41,7 +41,7 @@ uint64_t PassReport::attachment_bytes_stored() const {
 
 uint64_t PassReport::bytes_read() const {
   return attachment_bytes_loaded() + tiles.parameter_bytes_read + geometry.index_bytes_read +
-         geometry.vertex_bytes_read;
+         geometry.vertex_bytes_read + texture.bytes_read;
 }
 
 uint64_t PassReport::bytes_written() const {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raster/pixel_format.h"
+#include "tiler/texture_cache.h"
 
 namespace ontile {
 
@@ -49,6 +50,7 @@ struct AttachmentTraffic {
 
 struct PassReport {
   std::string name;
+  std::string architecture = "tbdr";  // "tbdr" or "imr"
   int width_px = 0, height_px = 0, samples = 1;
   int tile_width_px = 0, tile_height_px = 0;
   bool tile_size_reduced = false;  // the colour budget forced smaller tiles
@@ -57,6 +59,8 @@ struct PassReport {
   GeometryCounters geometry;
   TileCounters tiles;
   std::vector<AttachmentTraffic> attachments;
+  TextureTraffic texture;
+  uint64_t render_target_cache_hits = 0, render_target_cache_misses = 0;  // IMR only
   // Wall-clock times (not deterministic; never part of comparisons).
   double binning_ms = 0.0;
   double tiles_ms = 0.0;

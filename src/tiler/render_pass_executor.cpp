@@ -131,6 +131,25 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// An IMR has no binning and no tile memory: no parameter buffer, and attachment traffic is
+// what the render-target cache moves (see imr_model.h).
+void apply_imr_model(const RenderPassDesc& pass, const TilerConfig& config,
+                     const std::vector<TileTrace>& traces, PassReport& report) {
+  const ImrTraffic imr = simulate_imr_pass(pass, traces, config.render_target_cache);
+  report.architecture = "imr";
+  report.geometry.parameter_bytes_written = 0;
+  report.tiles.parameter_bytes_read = 0;
+  report.render_target_cache_hits = imr.cache_hits;
+  report.render_target_cache_misses = imr.cache_misses;
+  for (size_t a = 0; a < report.attachments.size(); ++a) {
+    AttachmentTraffic& t = report.attachments[a];
+    t.transient = false;  // an IMR keeps every attachment in memory
+    t.bytes_loaded = imr.attachments[a].bytes_read;
+    t.bytes_stored = imr.attachments[a].bytes_written - imr.attachments[a].bytes_resolved;
+    t.bytes_resolved = imr.attachments[a].bytes_resolved;
+  }
+}
+
 }  // namespace
 
 void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
@@ -149,7 +168,8 @@ void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& til
   }
 }
 
-PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config) {
+PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config,
+                               TextureCache& texture_cache) {
   if (config.tile_size_px < 2 || config.tile_size_px > 256 ||
       (config.tile_size_px & (config.tile_size_px - 1)) != 0) {
     throw Error("tile size " + std::to_string(config.tile_size_px) +
@@ -178,13 +198,16 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
   const int attachment_count = static_cast<int>(pass.attachments.size());
+  const bool imr = config.architecture == Architecture::Imr;
+  std::vector<TileTrace> traces(grid.tile_count());
   tbb::parallel_for(0, grid.tile_count(), [&](int tile) {
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
-    execute_tile(pass, params, tile, memory, counters.local());
+    execute_tile(pass, params, tile, memory, counters.local(), traces[tile], imr);
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
+  report.texture = replay_texture_traces(texture_cache, traces);
 
   // Every tile loads and stores its whole area, so attachment traffic is the surface size.
   const uint64_t pixels = static_cast<uint64_t>(pass.width_px) * pass.height_px;
@@ -204,6 +227,7 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     }
     report.attachments.push_back(t);
   }
+  if (imr) apply_imr_model(pass, config, traces, report);
   return report;
 }
 

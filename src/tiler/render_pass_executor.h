@@ -2,19 +2,29 @@
 // the tile-memory colour budget, bin all geometry, then run every tile in parallel (oneTBB)
 // and count the external memory traffic.
 #pragma once
+#include "tiler/imr_model.h"
 #include "tiler/pass_report.h"
+#include "tiler/texture_cache.h"
 #include "tiler/render_pass.h"
 
 namespace ontile {
 
+enum class Architecture { Tbdr, Imr };
+
 struct TilerConfig {
+  Architecture architecture = Architecture::Tbdr;
   int tile_size_px = 16;                 // Mali's 16x16 by default
   int color_budget_bits_per_px = 128;    // tile-buffer colour bits per pixel (Mali-G76: 128)
+  TextureCacheConfig texture_cache;
+  RenderTargetCacheConfig render_target_cache;  // IMR only
 };
 
 // Runs on the calling thread's oneTBB arena (callers pick the thread count with a
-// tbb::task_arena). Throws ontile::Error when the pass is invalid.
-PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config);
+// tbb::task_arena). `texture_cache` carries its state from pass to pass within a frame.
+// Images are the same for both architectures; only the traffic model differs. Throws
+// ontile::Error when the pass is invalid.
+PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config,
+                               TextureCache& texture_cache);
 
 // The tile size used for a pass needing `color_bits_per_px` of tile memory: the configured
 // square tile, its area halved (height first) until the colour attachments fit the budget

@@ -5,6 +5,7 @@
 #include <bit>
 
 #include "raster/rasterize.h"
+#include "raster/texel_trace.h"
 #include "tiler/tile_load_store.h"
 #include "util/error.h"
 
@@ -54,7 +55,33 @@ struct TriangleContext {
   const SamplePattern& pattern;
   const TileRect& rect;
   const TileFetch* fetch;
+  uint32_t triangle_ref;
+  std::vector<FragmentAccess>* fragments;  // null unless recording for the IMR model
 };
+
+// Records, per covered pixel, which samples were covered and written and what was accessed.
+void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
+                      QuadCoverage written, bool depth_test, bool depth_write, bool write_color) {
+  const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
+    if (!covered) continue;
+    FragmentAccess f;
+    f.triangle_ref = ctx.triangle_ref;
+    f.x_px = static_cast<uint16_t>(qx + (lane & 1));
+    f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
+    f.covered_samples = covered;
+    f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
+    f.subpass = static_cast<uint8_t>(ctx.tri.subpass);
+    if (depth_test) f.flags |= kDepthRead;
+    if (f.written_samples && depth_write) f.flags |= kDepthWritten;
+    if (f.written_samples && write_color && !ctx.subpass.color_outputs.empty()) {
+      f.flags |= kColorWritten;
+      if (blend_reads) f.flags |= kColorRead;
+    }
+    ctx.fragments->push_back(f);
+  }
+}
 
 void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
                           TileMemory& memory, TileCounters& counters) {
@@ -91,7 +118,10 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
   const uint8_t covered_lanes = lanes_of(coverage);
   if (!late_z) {
     counters.fragments_depth_rejected += std::popcount(static_cast<unsigned>(covered_lanes & ~lanes_of(passing)));
-    if (!passing) return;
+    if (!passing) {
+      if (ctx.fragments) record_fragments(ctx, qx, qy, coverage, 0, depth_test, depth_write, false);
+      return;
+    }
   }
 
   QuadOutput out;
@@ -133,6 +163,7 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
 
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const bool write_color = draw.fragment_shader != nullptr;
+  if (ctx.fragments) record_fragments(ctx, qx, qy, coverage, passing, depth_test, depth_write, write_color);
   for (int lane = 0; lane < kQuadLanes; ++lane) {
     const unsigned lane_bits = lane_coverage(passing, lane);
     if (!lane_bits) continue;
@@ -156,7 +187,9 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
 }  // namespace
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
-                  TileMemory& memory, TileCounters& counters) {
+                  TileMemory& memory, TileCounters& counters, TileTrace& trace,
+                  bool record_fragment_accesses) {
+  const TexelTraceScope texel_trace(&trace.texture_granules);
   const TileGrid& grid = params.grid;
   TileRect rect;
   rect.x0 = (tile_index % grid.tiles_x()) * grid.tile_width_px;
@@ -180,8 +213,8 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
     const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
-    const TriangleContext ctx{pass, subpass, draw, tri, params.varyings(ref, tri),
-                              n, pattern, rect, &fetch};
+    const TriangleContext ctx{pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
+                              rect, &fetch, ref, record_fragment_accesses ? &trace.fragments : nullptr};
     rasterize_quads(tri.setup, pattern, pixel_rect, [&](int qx, int qy, QuadCoverage coverage) {
       shade_and_write_quad(ctx, qx, qy, coverage, memory, counters);
     });

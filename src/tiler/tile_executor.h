@@ -4,10 +4,14 @@
 #include "tiler/parameter_buffer.h"
 #include "tiler/render_pass.h"
 #include "tiler/tile_memory.h"
+#include "tiler/tile_trace.h"
 
 namespace ontile {
 
+// Texture fetches are traced into trace.texture_granules; with record_fragments every
+// fragment's colour/depth accesses go to trace.fragments (for the IMR model).
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
-                  TileMemory& memory, TileCounters& counters);
+                  TileMemory& memory, TileCounters& counters, TileTrace& trace,
+                  bool record_fragment_accesses);
 
 }  // namespace ontile

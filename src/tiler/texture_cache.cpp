@@ -1,0 +1,88 @@
+// The texture cache model (see texture_cache.h): config validation, set-associative LRU lookup,
+// and the replay of the tiles' texture granules in tile-index order.
+#include "tiler/texture_cache.h"
+
+#include <bit>
+#include <string>
+
+#include "util/error.h"
+
+namespace ontile {
+namespace {
+
+// The trace records 64-byte granules (raster/texel_trace.h), so a line holds a whole number
+// of them.
+constexpr uint32_t kGranuleBytes = 64;
+constexpr uint64_t kEmptyWay = ~uint64_t{0};
+
+void validate(const TextureCacheConfig& config) {
+  const std::string where = "texture cache config: ";
+  if (config.line_bytes < kGranuleBytes || !std::has_single_bit(config.line_bytes)) {
+    throw Error(where + "line_bytes " + std::to_string(config.line_bytes) +
+                " must be a power of two >= 64");
+  }
+  if (config.ways < 1) throw Error(where + "ways must be >= 1 (got 0)");
+  const uint64_t set_bytes = uint64_t{config.line_bytes} * config.ways;
+  if (config.size_bytes == 0 || config.size_bytes % set_bytes != 0) {
+    throw Error(where + "size_bytes " + std::to_string(config.size_bytes) +
+                " must be a positive multiple of line_bytes x ways (" +
+                std::to_string(set_bytes) + ")");
+  }
+}
+
+}  // namespace
+
+void TextureTraffic::add(const TextureTraffic& o) {
+  accesses += o.accesses;
+  hits += o.hits;
+  misses += o.misses;
+  bytes_read += o.bytes_read;
+}
+
+TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
+  validate(config_);
+  sets_ = static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
+  tags_.assign(static_cast<size_t>(sets_) * config_.ways, kEmptyWay);
+  last_use_.assign(tags_.size(), 0);
+}
+
+// Mapping (plain modulo, no hashing, so tests can place lines in sets by hand):
+//   line = granule / (line_bytes / 64), set = line % sets, tag = line.
+// Keeping the whole line number as the tag makes a hit unambiguous whatever the set count.
+// Replacement is LRU by access timestamps; empty ways (timestamp 0) fill first, lowest first.
+bool TextureCache::access(uint64_t granule) {
+  const uint64_t line = granule >> std::countr_zero(config_.line_bytes / kGranuleBytes);
+  const size_t first_way = static_cast<size_t>(line % sets_) * config_.ways;
+  ++clock_;
+  size_t victim = first_way;
+  for (size_t way = first_way; way < first_way + config_.ways; ++way) {
+    if (tags_[way] == line) {
+      last_use_[way] = clock_;
+      return true;
+    }
+    if (last_use_[way] < last_use_[victim]) victim = way;
+  }
+  tags_[victim] = line;  // a miss fills the line
+  last_use_[victim] = clock_;
+  return false;
+}
+
+// Tiles in index order, each tile's granules in the order its fetches touched them: the same
+// sequence whatever thread ran each tile, so the counts are deterministic.
+TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
+  TextureTraffic traffic;
+  for (const TileTrace& trace : traces) {
+    for (const uint64_t granule : trace.texture_granules) {
+      ++traffic.accesses;
+      if (cache.access(granule)) {
+        ++traffic.hits;
+      } else {
+        ++traffic.misses;
+      }
+    }
+  }
+  traffic.bytes_read = traffic.misses * cache.config().line_bytes;
+  return traffic;
+}
+
+}  // namespace ontile
