@@ -38,8 +38,10 @@ struct QuadFragment {
   uint8_t lane_mask = 0;         // lanes with at least one covered sample (others are helpers)
   bool front_facing = true;
   uint32_t primitive_id = 0;     // stable id of the drawn triangle (see DrawCall)
-  float depth[kQuadLanes] = {};  // depth at the pixel centre, [0, 1]
-  // Perspective-correct varyings at the pixel centres, structure-of-arrays: varyings[i][lane].
+  int sample = -1;               // the sample being shaded (sample shading), -1 = whole pixel
+  float depth[kQuadLanes] = {};  // depth at the shading position, [0, 1]
+  // Perspective-correct varyings at the shading positions (pixel centres, or the sample being
+  // shaded), structure-of-arrays: varyings[i][lane].
   // Helper lanes hold extrapolated values so derivatives are defined.
   float varyings[kMaxVaryings][kQuadLanes];
   const FramebufferFetch* fetch = nullptr;
@@ -56,9 +58,11 @@ struct QuadFragment {
     return {varyings[first][lane], varyings[first + 1][lane], varyings[first + 2][lane],
             varyings[first + 3][lane]};
   }
-  // Framebuffer fetch of input slot `input_slot` at this lane's own pixel.
-  glm::vec4 input(int input_slot, int lane, int sample = 0) const {
-    return fetch->load(input_slot, x_px + (lane & 1), y_px + (lane >> 1), sample);
+  // Framebuffer fetch of input slot `input_slot` at this lane's own pixel: the sample being
+  // shaded, or sample `which` (0 when shading whole pixels).
+  glm::vec4 input(int input_slot, int lane, int which = -1) const {
+    const int s = which >= 0 ? which : (sample >= 0 ? sample : 0);
+    return fetch->load(input_slot, x_px + (lane & 1), y_px + (lane >> 1), s);
   }
 };
 
@@ -76,6 +80,9 @@ class FragmentShader {
   virtual void shade(const QuadFragment& quad, QuadOutput& out) const = 0;
   // True when shade() may discard: the depth test then runs after shading (late Z).
   virtual bool may_discard() const { return false; }
+  // True to run once per covered sample at the sample's position instead of once per pixel
+  // (Vulkan sampleShadingEnable); with one sample per pixel it changes nothing.
+  virtual bool per_sample_shading() const { return false; }
 };
 
 }  // namespace ontile

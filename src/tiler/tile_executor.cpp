@@ -83,6 +83,39 @@ void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage c
   }
 }
 
+// Runs the fragment shader on one quad with varyings and depth interpolated at the given
+// offset inside each pixel (helper lanes get extrapolated values so derivatives exist).
+void shade_quad(const TriangleContext& ctx, int qx, int qy, uint8_t lane_mask, int32_t off_x,
+                int32_t off_y, int sample, QuadOutput& out) {
+  const TriangleSetup& t = ctx.tri.setup;
+  QuadFragment quad;
+  quad.x_px = qx;
+  quad.y_px = qy;
+  quad.lane_mask = lane_mask;
+  quad.sample = sample;
+  quad.front_facing = t.front_facing;
+  quad.primitive_id = ctx.tri.primitive_id;
+  quad.fetch = ctx.fetch;
+  const int n = ctx.varying_count;
+  const float* v0 = ctx.varyings;
+  const float* v1 = v0 + n;
+  const float* v2 = v1 + n;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    double bary[3];
+    screen_barycentrics(t, int64_t{qx + (lane & 1)} * kSubpixelScale + off_x,
+                        int64_t{qy + (lane >> 1)} * kSubpixelScale + off_y, bary);
+    quad.depth[lane] = interpolate_depth(t, bary);
+    float w[3];
+    perspective_weights(t, bary, w);
+    for (int k = 0; k < n; ++k) quad.varyings[k][lane] = w[0] * v0[k] + w[1] * v1[k] + w[2] * v2[k];
+  }
+  ctx.draw.fragment_shader->shade(quad, out);
+}
+
+// Coverage bits of sample 0 in every lane; shifted left by s for sample s.
+constexpr QuadCoverage kSampleBits = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
+                                     (1u << (3 * kMaxSamples));
+
 void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
                           TileMemory& memory, TileCounters& counters) {
   const TriangleSetup& t = ctx.tri.setup;
@@ -124,35 +157,27 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
     }
   }
 
-  QuadOutput out;
+  // Shading: once per pixel at the centre, or once per sample at the sample position when the
+  // shader asks (Vulkan sample shading). Each invocation's discards remove only its samples.
+  const bool per_sample = draw.fragment_shader && draw.fragment_shader->per_sample_shading();
+  const int invocations = per_sample ? samples : 1;
+  QuadOutput outputs_by_sample[kMaxSamples];
   if (draw.fragment_shader) {
-    QuadFragment quad;
-    quad.x_px = qx;
-    quad.y_px = qy;
-    quad.lane_mask = late_z ? covered_lanes : lanes_of(passing);
-    quad.front_facing = t.front_facing;
-    quad.primitive_id = ctx.tri.primitive_id;
-    quad.fetch = ctx.fetch;
-    const int n = ctx.varying_count;
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      // Varyings and depth at the pixel centre, also for helper lanes (extrapolated).
-      double bary[3];
-      screen_barycentrics(t, int64_t{qx + (lane & 1)} * kSubpixelScale + kSubpixelScale / 2,
-                          int64_t{qy + (lane >> 1)} * kSubpixelScale + kSubpixelScale / 2, bary);
-      quad.depth[lane] = interpolate_depth(t, bary);
-      float w[3];
-      perspective_weights(t, bary, w);
-      const float* v0 = ctx.varyings;
-      const float* v1 = v0 + n;
-      const float* v2 = v1 + n;
-      for (int k = 0; k < n; ++k) quad.varyings[k][lane] = w[0] * v0[k] + w[1] * v1[k] + w[2] * v2[k];
-    }
-    draw.fragment_shader->shade(quad, out);
-    counters.fragments_shaded += std::popcount(static_cast<unsigned>(quad.lane_mask));
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if ((out.discard_mask >> lane) & 1u) {
-        passing &= ~(QuadCoverage{0xFF} << (lane * kMaxSamples));
-        coverage &= ~(QuadCoverage{0xFF} << (lane * kMaxSamples));
+    for (int inv = 0; inv < invocations; ++inv) {
+      const QuadCoverage sample_bits = per_sample ? kSampleBits << inv : ~QuadCoverage{0};
+      const uint8_t lanes = lanes_of((late_z ? coverage : passing) & sample_bits);
+      if (!lanes) continue;
+      QuadOutput& out = outputs_by_sample[inv];
+      const int32_t off_x = per_sample ? ctx.pattern.x[inv] : kSubpixelScale / 2;
+      const int32_t off_y = per_sample ? ctx.pattern.y[inv] : kSubpixelScale / 2;
+      shade_quad(ctx, qx, qy, lanes, off_x, off_y, per_sample ? inv : -1, out);
+      counters.fragments_shaded += std::popcount(static_cast<unsigned>(lanes));
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        if ((out.discard_mask >> lane) & 1u) {
+          const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
+          passing &= ~lane_bits;
+          coverage &= ~lane_bits;
+        }
       }
     }
     if (late_z) {
@@ -172,6 +197,7 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
       const size_t i = memory.index(qx + (lane & 1) - ctx.rect.x0, qy + (lane >> 1) - ctx.rect.y0, s);
       if (depth_write) depth_plane[i] = sample_depth[lane][s];
       if (write_color) {
+        const QuadOutput& out = outputs_by_sample[per_sample ? s : 0];
         for (size_t k = 0; k < outputs.size(); ++k) {
           const int a = outputs[k];
           glm::vec4& dst = memory.color_plane(a)[i];
