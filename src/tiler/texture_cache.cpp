@@ -43,28 +43,25 @@ TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
   validate(config_);
   sets_ = static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
   tags_.assign(static_cast<size_t>(sets_) * config_.ways, kEmptyWay);
-  last_use_.assign(tags_.size(), 0);
 }
 
 // Mapping (plain modulo, no hashing, so tests can place lines in sets by hand):
 //   line = granule / (line_bytes / 64), set = line % sets, tag = line.
 // Keeping the whole line number as the tag makes a hit unambiguous whatever the set count.
-// Replacement is LRU by access timestamps; empty ways (timestamp 0) fill first, lowest first.
+// Replacement is LRU: each set keeps its lines ordered from most to least recently used, so a
+// hit moves its line to the front and a miss drops the last (least recent or empty) way. Hits
+// are found after a few compares, since texture streams reuse the lines they just touched.
 bool TextureCache::access(uint64_t granule) {
   const uint64_t line = granule >> std::countr_zero(config_.line_bytes / kGranuleBytes);
-  const size_t first_way = static_cast<size_t>(line % sets_) * config_.ways;
-  ++clock_;
-  size_t victim = first_way;
-  for (size_t way = first_way; way < first_way + config_.ways; ++way) {
-    if (tags_[way] == line) {
-      last_use_[way] = clock_;
-      return true;
-    }
-    if (last_use_[way] < last_use_[victim]) victim = way;
-  }
-  tags_[victim] = line;  // a miss fills the line
-  last_use_[victim] = clock_;
-  return false;
+  uint64_t* set = tags_.data() + static_cast<size_t>(line % sets_) * config_.ways;
+  const uint32_t ways = config_.ways;
+  uint32_t position = 0;
+  while (position < ways && set[position] != line) ++position;
+  const bool hit = position < ways;
+  if (!hit) position = ways - 1;  // evict the least recently used (or an empty) way
+  for (uint32_t i = position; i > 0; --i) set[i] = set[i - 1];
+  set[0] = line;
+  return hit;
 }
 
 // Tiles in index order, each tile's granules in the order its fetches touched them: the same

@@ -10,7 +10,7 @@ namespace ontile {
 
 struct TextureCacheConfig {
   uint32_t size_bytes = 256 * 1024;
-  uint32_t line_bytes = 64;   // a multiple of 64 (the trace granule)
+  uint32_t line_bytes = 64;   // a power of two >= 64 (the trace granule)
   uint32_t ways = 16;
 };
 
@@ -32,9 +32,7 @@ class TextureCache {
  private:
   TextureCacheConfig config_;
   uint32_t sets_ = 0;
-  std::vector<uint64_t> tags_;      // sets_ x ways, ~0 = empty
-  std::vector<uint64_t> last_use_;  // LRU timestamps
-  uint64_t clock_ = 0;
+  std::vector<uint64_t> tags_;  // sets_ x ways, each set most recently used first, ~0 = empty
 };
 
 // Feeds every tile's texture granules through the cache, tiles in index order.
