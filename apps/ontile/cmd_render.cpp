@@ -16,8 +16,9 @@ namespace ontile::cli {
 namespace {
 
 struct RenderOptions {
-  std::string scene, out, report, size = "1280x720", pipeline = "lambert";
+  std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr";
   int camera = -1, threads = 0, tile = 16, budget = 128;
+  int texture_cache_kib = 256, rt_cache_kib = 128;
 };
 
 void ensure_parent_folder(const std::filesystem::path& path) {
@@ -57,6 +58,9 @@ void run_render(const RenderOptions& o) {
   settings.context.threads = o.threads;
   settings.context.tiler.tile_size_px = o.tile;
   settings.context.tiler.color_budget_bits_per_px = o.budget;
+  settings.context.tiler.architecture = o.arch == "imr" ? Architecture::Imr : Architecture::Tbdr;
+  settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
+  settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
   const std::filesystem::path out(o.out);
   const std::string ext = out.extension().string();
   if (ext != ".png" && ext != ".exr") {
@@ -127,6 +131,12 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--budget", o->budget, "Tile-memory colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 4096));
   cmd->add_option("--report", o->report, "Write the JSON traffic report here");
+  cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
+      ->check(CLI::IsMember({"tbdr", "imr"}));
+  cmd->add_option("--texture-cache-kib", o->texture_cache_kib, "Texture cache size in KiB (16-way, 64-byte lines; default 256)")
+      ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
+  cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")
+      ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
   cmd->callback([o] { run_render(*o); });
 }
 

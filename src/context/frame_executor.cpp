@@ -327,6 +327,7 @@ void FrameExecutor::operator()(const op::Blit& c) {
   if (pass_) close_pass();
   const ShaderPass* pass = c.material ? c.material->shader->find_pass(c.pass_name) : nullptr;
   if (!pass) throw Error("blit: material has no pass '" + c.pass_name + "'");
+  resolve(c.source, "blit source");
   op::SetRenderTarget target;
   target.name = "blit " + c.material->name;
   target.colors.push_back({c.destination, LoadAction::DontCare, StoreAction::Store});

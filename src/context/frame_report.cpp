@@ -137,6 +137,11 @@ std::string frame_report_table(const FrameReport& frame) {
                     mib(a.bytes_resolved).c_str());
       out << line;
     }
+    std::snprintf(line, sizeof line, "  %-20s %llu accesses, %llu hits, %llu misses, read %s\n", "texture cache",
+                  static_cast<unsigned long long>(p.texture.accesses),
+                  static_cast<unsigned long long>(p.texture.hits),
+                  static_cast<unsigned long long>(p.texture.misses), mib(p.texture.bytes_read).c_str());
+    out << line;
   }
   out << "frame: read " << mib(frame.bytes_read()) << " (" << frame.bytes_read() << " B), written "
       << mib(frame.bytes_written()) << " (" << frame.bytes_written() << " B)\n";

@@ -14,6 +14,14 @@ std::shared_ptr<const Texture2D> DrawContext::texture(const std::string& name,
   return resolve_texture ? resolve_texture(*binding) : nullptr;
 }
 
+const MeshPrimitive& DrawContext::require_mesh() const {
+  if (!mesh) {
+    throw Error("material '" + (material ? material->name : std::string("?")) +
+                "': its pass draws meshes but was used for a full-screen draw (blit)");
+  }
+  return *mesh;
+}
+
 Shader& Shader::add_pass(ShaderPass pass) {
   if (find_pass(pass.name)) throw Error("shader '" + name_ + "': duplicate pass '" + pass.name + "'");
   passes_.push_back(std::move(pass));

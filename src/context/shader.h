@@ -39,6 +39,9 @@ struct DrawContext {
   // Resolves a texture property (render targets become textures of their current contents).
   std::function<std::shared_ptr<const Texture2D>(const TextureBinding&)> resolve_texture;
 
+  // The mesh of a mesh draw; throws ontile::Error naming the material when the pass is used
+  // for a full-screen draw (blit) that has none.
+  const MeshPrimitive& require_mesh() const;
   // The texture bound to `name` (null when unbound) and its sampler.
   std::shared_ptr<const Texture2D> texture(const std::string& name, SamplerDesc* sampler = nullptr) const;
 };

@@ -6,7 +6,7 @@ namespace {
 
 DrawFunctors lit_forward_functors(const DrawContext& ctx) {
   DrawFunctors f;
-  auto vs = std::make_unique<MeshVertexShader>(*ctx.mesh, ctx.world, ctx.camera.view_projection);
+  auto vs = std::make_unique<MeshVertexShader>(ctx.require_mesh(), ctx.world, ctx.camera.view_projection);
   f.input_vertex_bytes = vs->input_vertex_bytes();
   f.vertex = std::move(vs);
   LambertParams p;
@@ -34,7 +34,7 @@ DrawFunctors lit_forward_functors(const DrawContext& ctx) {
 
 DrawFunctors depth_only_functors(const DrawContext& ctx) {
   DrawFunctors f;
-  auto vs = std::make_unique<MeshVertexShader>(*ctx.mesh, ctx.world, ctx.camera.view_projection);
+  auto vs = std::make_unique<MeshVertexShader>(ctx.require_mesh(), ctx.world, ctx.camera.view_projection);
   f.input_vertex_bytes = 12;  // positions only
   f.vertex = std::move(vs);
   return f;
