@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   ontile::cli::add_render_command(app);
   ontile::cli::add_gen_scene_command(app);
   ontile::cli::add_pipelines_command(app);
+  ontile::cli::add_golden_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -88,6 +88,11 @@ void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage c
 void shade_quad(const TriangleContext& ctx, int qx, int qy, uint8_t lane_mask, int32_t off_x,
                 int32_t off_y, int sample, QuadOutput& out) {
   const TriangleSetup& t = ctx.tri.setup;
+  // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
+  // images never depend on stack contents.
+  for (size_t k = 0; k < ctx.subpass.color_outputs.size(); ++k) {
+    for (int lane = 0; lane < kQuadLanes; ++lane) out.color[k][lane] = glm::vec4(0.0f);
+  }
   QuadFragment quad;
   quad.x_px = qx;
   quad.y_px = qy;

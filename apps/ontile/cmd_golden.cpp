@@ -1,0 +1,35 @@
+// `ontile golden [--update]`: compares every golden case with golden/, or rewrites golden/.
+#include <cstdio>
+
+#include "commands.h"
+#include "golden/golden_images.h"
+#include "util/error.h"
+
+namespace ontile::cli {
+
+void add_golden_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("golden", "Compare the golden images (or rewrite them with --update)");
+  struct Options {
+    bool update = false;
+    std::string golden_dir = std::string(ONTILE_SOURCE_DIR) + "/golden";
+    std::string failure_dir = "out/golden_failures";
+    std::string shared_assets = std::string(ONTILE_SOURCE_DIR) + "/../shared/assets";
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_flag("--update", o->update, "Rewrite the golden images from the current renderer");
+  cmd->add_option("--dir", o->golden_dir, "Golden image folder");
+  cmd->add_option("--failures", o->failure_dir, "Where mismatches write actual and diff images");
+  cmd->add_option("--assets", o->shared_assets, "Shared assets folder");
+  cmd->callback([o] {
+    int failures = 0;
+    for (const GoldenCase& c : golden_cases(ONTILE_SOURCE_DIR, o->shared_assets)) {
+      const GoldenResult r = run_golden_case(c, o->golden_dir, o->failure_dir, o->update);
+      const char* status[] = {"match", "MISMATCH", "MISSING", "updated", "skipped"};
+      std::printf("%-28s %-9s %s\n", c.name.c_str(), status[static_cast<int>(r.status)], r.message.c_str());
+      failures += r.status == GoldenResult::Status::Mismatch || r.status == GoldenResult::Status::Missing;
+    }
+    if (failures) throw Error(std::to_string(failures) + " golden image(s) differ");
+  });
+}
+
+}  // namespace ontile::cli

@@ -1,0 +1,116 @@
+// MatCap ("material capture", lit sphere) fragment functor: the view-space normal picks a texel
+// of a painted sphere, so a whole lighting model comes from one bilinear lookup. Variants: base
+// colour map (kBaseMap) and tangent-space normal map (kNormalMap, the NORMAL_MAP keyword).
+#pragma once
+#include <cstdint>
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include "raster/shader_interface.h"
+#include "raster/texture.h"
+#include "shaders_cpp/toon/toon_outputs.h"
+#include "shaders_cpp/toon/toon_vertex_shader.h"
+#include "util/error.h"
+
+namespace ontile {
+
+// MatCap texture coordinates of a unit view-space normal (+X right, +Y up, +Z towards the
+// camera): u = 0.5 + 0.5 * n.x, v = 0.5 - 0.5 * n.y. v is flipped because texture v = 0 is the
+// top row: a normal pointing up (+Y view) reads the top of the image, (0,0,1) its centre, and
+// (1,0,0) the middle of the right edge.
+glm::vec2 matcap_uv(glm::vec3 view_normal);
+
+// The MatCap sampler: bilinear, clamp to edge, base level only (MipmapMode::None). The uv of
+// neighbouring pixels can jump across the sphere on creases, which would select blurry mips.
+SamplerDesc matcap_sampler();
+
+// glTF 2.0 3.9.3 normalTexture: n = normalize((texel * 2 - 1) * (scale, scale, 1)).
+glm::vec3 decode_tangent_space_normal(glm::vec4 texel, float normal_scale);
+
+// Tangent space -> world with the TBN frame of glTF 2.0 3.7.2.1: N = unit world normal,
+// T = tangent.xyz made perpendicular to N (Gram-Schmidt), B = cross(N, T) * tangent.w. A zero or
+// degenerate tangent (a mesh without TANGENT) returns N unperturbed. Result is unit length.
+glm::vec3 perturb_normal(glm::vec3 unit_world_normal, glm::vec4 world_tangent,
+                         glm::vec3 tangent_space_normal);
+
+struct MatCapParams {
+  const Texture2D* matcap = nullptr;  // required; sampled with matcap_sampler()
+  glm::vec4 base_color{1.0f};         // multiplies the MatCap colour; alpha is the output alpha
+  const Texture2D* base_map = nullptr;  // kBaseMap: required (sRGB base colour texture)
+  SamplerDesc base_sampler;
+  const Texture2D* normal_map = nullptr;  // kNormalMap: required (linear tangent-space normals)
+  SamplerDesc normal_sampler;
+  float normal_scale = 1.0f;
+  glm::mat3 world_to_view{1.0f};  // rotation part of the view matrix (kNormalMap only)
+  ToonOutputParams outputs;
+};
+
+// Colour = MatCap(matcap_uv(n)).rgb x base colour factor [x base map], alpha = base alpha.
+// n is the interpolated view-space normal, or with kNormalMap the normal-mapped world normal
+// rotated to view space. The normal output is always the geometric (interpolated) view normal:
+// normal-map detail would otherwise light up the screen-space normal edges everywhere.
+template <uint32_t kOutputs, bool kBaseMap, bool kNormalMap>
+class MatCapShader final : public FragmentShader {
+  static_assert(is_valid_toon_output_mask(kOutputs), "kOutputs must be a ToonOutput mask");
+
+ public:
+  explicit MatCapShader(const MatCapParams& params) : p_(params), matcap_sampler_(matcap_sampler()) {
+    if ((kOutputs & ToonOutput::kColor) == 0u) return;
+    if (!p_.matcap) throw Error("MatCapShader: no MatCap texture");
+    if (kBaseMap && !p_.base_map) throw Error("MatCapShader: base-map variant without a base map");
+    if (kNormalMap && !p_.normal_map) {
+      throw Error("MatCapShader: NORMAL_MAP variant without a normal map");
+    }
+  }
+
+  void shade(const QuadFragment& quad, QuadOutput& out) const override {
+    glm::vec3 view_normal[kQuadLanes];
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      view_normal[lane] =
+          toon_unit_normal(quad.var3(ToonVertexShader::kViewNormal, lane), quad.front_facing);
+    }
+    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(quad, view_normal, out);
+    write_toon_normal_and_border<kOutputs>(quad, out, view_normal, p_.outputs);
+  }
+
+ private:
+  void shade_color(const QuadFragment& quad, const glm::vec3 view_normal[kQuadLanes],
+                   QuadOutput& out) const {
+    glm::vec2 uv[kQuadLanes];
+    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(ToonVertexShader::kUv, lane);
+    glm::vec2 matcap_coords[kQuadLanes];
+    if constexpr (kNormalMap) {
+      glm::vec4 texel[kQuadLanes];
+      p_.normal_map->sample_quad(p_.normal_sampler, uv, texel);
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const glm::vec3 world_normal =
+            toon_unit_normal(quad.var3(ToonVertexShader::kNormal, lane), quad.front_facing);
+        const glm::vec3 mapped =
+            perturb_normal(world_normal, quad.var4(ToonVertexShader::kTangent, lane),
+                           decode_tangent_space_normal(texel[lane], p_.normal_scale));
+        matcap_coords[lane] = matcap_uv(toon_unit_normal(p_.world_to_view * mapped, true));
+      }
+    } else {
+      for (int lane = 0; lane < kQuadLanes; ++lane) matcap_coords[lane] = matcap_uv(view_normal[lane]);
+    }
+    glm::vec4 matcap[kQuadLanes];
+    p_.matcap->sample_quad(matcap_sampler_, matcap_coords, matcap);
+    glm::vec4 albedo[kQuadLanes];
+    for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] = p_.base_color;
+    if constexpr (kBaseMap) {
+      glm::vec4 texel[kQuadLanes];
+      p_.base_map->sample_quad(p_.base_sampler, uv, texel);
+      for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
+    }
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!quad.lane_active(lane)) continue;
+      out.color[0][lane] = glm::vec4(glm::vec3(matcap[lane]) * glm::vec3(albedo[lane]), albedo[lane].w);
+    }
+  }
+
+  MatCapParams p_;
+  SamplerDesc matcap_sampler_;
+};
+
+}  // namespace ontile

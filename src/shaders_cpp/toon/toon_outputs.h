@@ -1,0 +1,78 @@
+// What a cartoon fragment functor writes: a bit mask of colour, view-space normal and border
+// colour, packed into consecutive colour targets, so the MRT pass and the naive one-output-per-pass
+// pipeline run the same code and write bit-identical values.
+#pragma once
+#include <bit>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "raster/shader_interface.h"
+
+namespace ontile {
+
+struct ToonOutput {
+  static constexpr uint32_t kColor = 1u;   // shaded colour (linear RGBA)
+  static constexpr uint32_t kNormal = 2u;  // view-space unit normal, encoded (NormalEncoding)
+  static constexpr uint32_t kBorder = 4u;  // the material's border colour RGBA, alpha 0 = none
+  static constexpr uint32_t kAll = kColor | kNormal | kBorder;
+};
+
+constexpr bool is_valid_toon_output_mask(uint32_t mask) {
+  return mask != 0u && (mask & ~ToonOutput::kAll) == 0u;
+}
+// Colour-target index of `output` (a single bit) in a pass writing `mask`: targets are packed in
+// bit order, colour first, then normal, then border (kColor|kBorder puts the border in slot 1).
+constexpr int toon_output_slot(uint32_t mask, uint32_t output) {
+  return std::popcount(mask & (output - 1u));
+}
+constexpr int toon_output_count(uint32_t mask) { return std::popcount(mask & ToonOutput::kAll); }
+
+// How the normal target stores a view-space unit normal n:
+//  Unorm: (n * 0.5 + 0.5, 1), for UNORM targets such as RGB10A2 that cannot hold negatives;
+//  Float: (n, 1) unchanged, for float targets such as RGBA16F.
+enum class NormalEncoding { Unorm, Float };
+
+inline glm::vec4 encode_view_normal(glm::vec3 n, NormalEncoding encoding) {
+  if (encoding == NormalEncoding::Unorm) return glm::vec4(n * 0.5f + 0.5f, 1.0f);
+  return glm::vec4(n, 1.0f);
+}
+inline glm::vec3 decode_view_normal(glm::vec4 stored, NormalEncoding encoding) {
+  if (encoding == NormalEncoding::Unorm) return glm::vec3(stored) * 2.0f - 1.0f;
+  return glm::vec3(stored);
+}
+
+// Per-material settings of the normal and border outputs.
+struct ToonOutputParams {
+  NormalEncoding normal_encoding = NormalEncoding::Unorm;
+  glm::vec4 border_color{0.0f};  // RGBA, alpha 0 = this material draws no screen-space edges
+};
+
+// An interpolated normal made unit length (a zero vector gives +Z) and turned towards the viewer
+// on back faces, which are only seen on double-sided materials (as LambertShader does).
+inline glm::vec3 toon_unit_normal(glm::vec3 n, bool front_facing) {
+  const float len = glm::length(n);
+  n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+  return front_facing ? n : -n;
+}
+
+// Writes the normal and border outputs of `kOutputs` for the active lanes; the functor writes
+// colour (slot 0) itself. Shared by every toon functor so both pipelines encode identically.
+template <uint32_t kOutputs>
+inline void write_toon_normal_and_border(const QuadFragment& quad, QuadOutput& out,
+                                         const glm::vec3 view_normal[kQuadLanes],
+                                         const ToonOutputParams& params) {
+  static_assert(is_valid_toon_output_mask(kOutputs), "kOutputs must be a ToonOutput mask");
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (!quad.lane_active(lane)) continue;
+    if constexpr ((kOutputs & ToonOutput::kNormal) != 0u) {
+      out.color[toon_output_slot(kOutputs, ToonOutput::kNormal)][lane] =
+          encode_view_normal(view_normal[lane], params.normal_encoding);
+    }
+    if constexpr ((kOutputs & ToonOutput::kBorder) != 0u) {
+      out.color[toon_output_slot(kOutputs, ToonOutput::kBorder)][lane] = params.border_color;
+    }
+  }
+}
+
+}  // namespace ontile
