@@ -19,6 +19,7 @@ struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr";
   int camera = -1, threads = 0, tile = 16, budget = 128;
   int texture_cache_kib = 256, rt_cache_kib = 128;
+  std::vector<std::string> pipeline_options;
 };
 
 void ensure_parent_folder(const std::filesystem::path& path) {
@@ -55,6 +56,11 @@ void run_render(const RenderOptions& o) {
   parse_size(o.size, settings.width_px, settings.height_px);
   settings.pipeline = o.pipeline;
   settings.camera_index = o.camera;
+  for (const std::string& kv : o.pipeline_options) {
+    const size_t eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw Error("--set '" + kv + "': expected KEY=VALUE");
+    settings.options.set(kv.substr(0, eq), kv.substr(eq + 1));
+  }
   settings.context.threads = o.threads;
   settings.context.tiler.tile_size_px = o.tile;
   settings.context.tiler.color_budget_bits_per_px = o.budget;
@@ -131,6 +137,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--budget", o->budget, "Tile-memory colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 4096));
   cmd->add_option("--report", o->report, "Write the JSON traffic report here");
+  cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));
   cmd->add_option("--texture-cache-kib", o->texture_cache_kib, "Texture cache size in KiB (16-way, 64-byte lines; default 256)")

@@ -8,6 +8,7 @@
 namespace ontile {
 
 FrameOutputs LambertPipeline::render(RenderContext& context, const FrameInputs& in) {
+  in.options.reject_unknown(name());
   const Scene& scene = *in.scene;
   const CameraMatrices camera = camera_matrices(in.camera, double(in.width_px) / in.height_px);
   const std::unique_ptr<Shader> lit = make_lit_shader();

@@ -1,7 +1,9 @@
 // The interface every render pipeline implements, and the registry the CLI lists and picks
 // pipelines from. Pipelines talk only to the RenderContext.
 #pragma once
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -10,10 +12,24 @@
 
 namespace ontile {
 
+// Pipeline-specific options (`ontile render --set key=value`). A pipeline reads its keys with
+// take() and rejects the rest with reject_unknown(), so typos are errors, not silent defaults.
+class PipelineOptions {
+ public:
+  void set(const std::string& key, const std::string& value) { values_[key] = value; }
+  std::string take(const std::string& key, const std::string& fallback) const;
+  void reject_unknown(const std::string& pipeline) const;
+
+ private:
+  std::map<std::string, std::string> values_;
+  mutable std::set<std::string> taken_;
+};
+
 struct FrameInputs {
   const Scene* scene = nullptr;
   Camera camera;
   int width_px = 1280, height_px = 720;
+  PipelineOptions options;
 };
 
 struct FrameOutputs {

@@ -17,6 +17,18 @@ const std::map<std::string, std::function<std::unique_ptr<Pipeline>()>>& registr
 
 }  // namespace
 
+std::string PipelineOptions::take(const std::string& key, const std::string& fallback) const {
+  taken_.insert(key);
+  const auto it = values_.find(key);
+  return it == values_.end() ? fallback : it->second;
+}
+
+void PipelineOptions::reject_unknown(const std::string& pipeline) const {
+  for (const auto& [key, value] : values_) {
+    if (!taken_.count(key)) throw Error("pipeline '" + pipeline + "' has no option '" + key + "'");
+  }
+}
+
 std::vector<std::string> pipeline_names() {
   std::vector<std::string> names;
   for (const auto& [name, factory] : registry()) names.push_back(name);

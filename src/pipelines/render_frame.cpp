@@ -29,6 +29,7 @@ RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings) {
   inputs.camera = frame.camera;
   inputs.width_px = settings.width_px;
   inputs.height_px = settings.height_px;
+  inputs.options = settings.options;
   frame.outputs = pipeline->render(*frame.context, inputs);
   return frame;
 }

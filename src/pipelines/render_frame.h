@@ -14,6 +14,7 @@ struct RenderSettings {
   int camera_index = -1;  // -1: the scene's first camera, or a default framing camera
   int width_px = 1280, height_px = 720;
   ContextConfig context;
+  PipelineOptions options;
 };
 
 struct RenderedFrame {
