@@ -2,7 +2,9 @@
 #include <functional>
 #include <map>
 
+#include "pipelines/cartoon/cartoon_pipelines.h"
 #include "pipelines/lambert_pipeline.h"
+#include "pipelines/universal/universal_pipeline.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -11,6 +13,10 @@ namespace {
 const std::map<std::string, std::function<std::unique_ptr<Pipeline>()>>& registry() {
   static const std::map<std::string, std::function<std::unique_ptr<Pipeline>()>> r = {
       {"lambert", [] { return std::make_unique<LambertPipeline>(); }},
+      {"universal", [] { return make_universal_pipeline(); }},
+      {"cartoon", [] { return std::make_unique<CartoonPipeline>(false); }},
+      {"cartoon-multipass", [] { return std::make_unique<CartoonPipeline>(true); }},
+      {"cartoon-hull", [] { return std::make_unique<CartoonHullPipeline>(); }},
   };
   return r;
 }

@@ -3,7 +3,6 @@
 // colour map (kBaseMap) and tangent-space normal map (kNormalMap, the NORMAL_MAP keyword).
 #pragma once
 #include <cstdint>
-#include <stdexcept>
 
 #include <glm/glm.hpp>
 
