@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Builds ontile and renders the bundled demo scene with the cartoon pipeline to out/demo.png,
-# printing the summary and
-# the traffic report.
+# printing the summary and the traffic report.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh

@@ -190,6 +190,50 @@ TEST(SobelEdgeShader, RunsAsAFullScreenPassOnTheTiler) {
     for (int x = 0; x < kW; ++x) EXPECT_EQ(target->read(x, y), expected_at(x, y)) << x << "," << y;
 }
 
+TEST(SobelEdgeShader, GrazingSurfacesRaiseTheDepthLimit) {
+  // A plane receding to the right: z = 2 + 0.1 x per pixel, so the Sobel strength is 8 * 0.1 =
+  // 0.8 against a limit of 0.2 z <= 0.7: every interior pixel is a depth edge when nothing says
+  // the plane is grazing. Its normal at |cos| = 0.2 to the view divides the limit by 0.2 (to
+  // z >= 2): no edges.
+  const auto color = test::make_float_texture(kW, kH, scene_at);
+  const auto depth = test::make_float_texture(kW, kH, [](int x, int) {
+    return glm::vec4(perspective_depth(2.0 + 0.1 * x, 0.1, 100.0), 0, 0, 1);
+  });
+  const glm::vec3 grazing = glm::normalize(glm::vec3(0.0f, std::sqrt(0.96f), 0.2f));
+  const auto normal = test::make_float_texture(kW, kH, [&](int, int) {
+    return encode_view_normal(grazing, NormalEncoding::Float);
+  });
+  SobelEdgeParams p;
+  p.color = color.get();
+  p.depth = depth.get();
+  p.depth_linearization = {false, 0.1f, 100.0f};
+  p.default_border_color = kRed;
+  const SobelEdgeShader depth_only(p);
+  p.normal = normal.get();
+  p.normal_encoding = NormalEncoding::Float;
+  const SobelEdgeShader compensated(p);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const glm::vec2 uv((x + 0.5f) / kW, (y + 0.5f) / kH);
+      if (x >= 1 && x <= kW - 2) {
+        EXPECT_EQ(depth_only.shade_pixel(uv), glm::vec4(1, 0, 0, 0.5f)) << x << "," << y;
+      }
+      EXPECT_EQ(compensated.shade_pixel(uv), scene_at(x, y)) << x << "," << y;
+    }
+  }
+}
+
+TEST(ViewRayScale, IsTheInverseProjectionScale) {
+  Camera camera;
+  camera.yfov_rad = 0.8f;
+  const CameraMatrices m = camera_matrices(camera, 2.0);
+  const glm::vec2 s = view_ray_scale(m.projection);
+  EXPECT_FLOAT_EQ(s.y, std::tan(0.4f));
+  EXPECT_FLOAT_EQ(s.x, 2.0f * std::tan(0.4f));
+  camera.type = Camera::Type::Orthographic;
+  EXPECT_EQ(view_ray_scale(camera_matrices(camera, 2.0).projection), glm::vec2(0.0f));
+}
+
 TEST(SobelEdgeShader, RejectsMismatchedBuffers) {
   const GBuffer g = make_gbuffer();
   SobelEdgeParams p = g.params();
