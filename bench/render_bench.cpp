@@ -3,40 +3,14 @@
 // of repeated frames, split into binning (geometry) and tile execution.
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
-#include <map>
-#include <memory>
-#include <unistd.h>
-
+#include "bench_scenes.h"
 #include "pipelines/render_frame.h"
-#include "scene/gen/scene_generator.h"
-#include "scene/gltf_loader.h"
 
 namespace ontile {
 namespace {
 
-const Scene* atrium(double size) {
-  static std::map<double, std::unique_ptr<Scene>> cache;
-  auto& slot = cache[size];
-  if (!slot) {
-    const auto path = std::filesystem::temp_directory_path() /
-                      ("ontile_bench_atrium_" + std::to_string(getpid()) + ".glb");
-    SceneGenOptions options;
-    options.size = size;
-    generate_scene("atrium", options, path);
-    slot = std::make_unique<Scene>(load_gltf(path));
-    std::filesystem::remove(path);
-  }
-  return slot.get();
-}
-
-const Scene* shared_asset(const std::string& relative) {
-  static std::map<std::string, std::unique_ptr<Scene>> cache;
-  auto& slot = cache[relative];
-  const std::filesystem::path path = std::filesystem::path(ONTILE_SHARED_ASSETS) / relative;
-  if (!slot && std::filesystem::exists(path)) slot = std::make_unique<Scene>(load_gltf(path));
-  return slot.get();
-}
+const Scene* atrium(double size) { return bench::generated_scene("atrium", size); }
+const Scene* shared_asset(const std::string& relative) { return bench::shared_asset(relative); }
 
 void render_benchmark(benchmark::State& state, const Scene* scene) {
   if (!scene) {

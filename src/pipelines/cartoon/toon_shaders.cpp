@@ -156,6 +156,7 @@ ToonShaderLibrary::ToonShaderLibrary(NormalEncoding encoding)
                       f.vertex = std::make_unique<FullScreenVertexShader>();
                       SobelEdgeParams p;
                       p.depth_linearization = DepthLinearization::from_projection(c.camera.projection);
+                      p.view_ray_scale = view_ray_scale(c.camera.projection);
                       p.normal_encoding = e;
                       const auto color = c.texture("_MainTex");
                       const auto depth = c.texture("_DepthTex");

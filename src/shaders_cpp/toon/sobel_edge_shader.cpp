@@ -117,16 +117,21 @@ glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
     if (depth[k] < depth[nearest]) nearest = k;
   }
   float depth_limit = p_.depth_threshold * p_.depth_sensitivity * linear_z[4];
+  const auto normal_at = [&](int k) {
+    return decode_view_normal(p_.normal->sample_lod(sampler_, tap_uv[k], 0.0f), p_.normal_encoding);
+  };
   glm::vec3 normals[9];
   if (p_.normal) {
-    for (int k = 0; k < 9; ++k) {
-      normals[k] = decode_view_normal(p_.normal->sample_lod(sampler_, tap_uv[k], 0.0f),
-                                      p_.normal_encoding);
-    }
+    normals[4] = normal_at(4);
     depth_limit /= grazing_cosine(normals[4], uv);
   }
   bool edge = sobel_magnitude(linear_z) > depth_limit;
-  if (!edge && p_.normal) edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
+  if (!edge && p_.normal) {  // the other normal taps only matter when depth found no edge
+    for (int k = 0; k < 9; ++k) {
+      if (k != 4) normals[k] = normal_at(k);
+    }
+    edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
+  }
   const glm::vec4 scene = p_.color->sample_lod(sampler_, uv, 0.0f);
   if (!edge) return scene;
   const glm::vec4 border =
