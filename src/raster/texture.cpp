@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <mutex>
 #include <cmath>
 #include <cstddef>
 
@@ -21,9 +22,12 @@ constexpr int kChannels = 4;
 constexpr float kMaxExactTexelCoord = 16777216.0f;
 // Textures start on 4 KiB boundaries of the simulated address space (a page, as allocators do).
 constexpr uint64_t kTextureAlignmentBytes = 4096;
-// Next free simulated address. Textures are created serially (loading, pipeline setup), so
-// creation order, and with it every address, is the same on every run.
-std::atomic<uint64_t> next_texture_address{0};
+// Each texture is a region of its own, texture id << kTextureIdShift; the texture-cache model
+// maps regions to frame-local addresses in first-use order (texture_cache.cpp), so counts do
+// not depend on when or in which order textures were created.
+std::atomic<uint64_t> next_texture_id{1};
+std::mutex reserved_bytes_mutex;
+std::vector<uint64_t> reserved_bytes_by_id{0};  // index = texture id
 
 // Per-channel decode tables for 8-bit texels (unused for Float32), and whether a texel trace
 // is active on this thread: looked up once per sampling call, since a thread_local read on
@@ -344,8 +348,19 @@ void Texture2D::assign_addresses(int memory_bytes_per_texel) {
   }
   const uint64_t reserved_bytes =
       (size_bytes + kTextureAlignmentBytes - 1) / kTextureAlignmentBytes * kTextureAlignmentBytes;
-  base_address_ = next_texture_address.fetch_add(reserved_bytes);
+  const uint64_t id = next_texture_id.fetch_add(1);
+  {
+    const std::lock_guard<std::mutex> lock(reserved_bytes_mutex);
+    if (reserved_bytes_by_id.size() <= id) reserved_bytes_by_id.resize(id + 1, 0);
+    reserved_bytes_by_id[id] = reserved_bytes;
+  }
+  base_address_ = id << kTextureIdShift;
   for (Level& level : levels_) level.address += base_address_;
+}
+
+uint64_t Texture2D::reserved_bytes_of(uint64_t texture_id) {
+  const std::lock_guard<std::mutex> lock(reserved_bytes_mutex);
+  return texture_id < reserved_bytes_by_id.size() ? reserved_bytes_by_id[texture_id] : 0;
 }
 
 int Texture2D::width(int level) const { return levels_[level].width; }

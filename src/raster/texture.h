@@ -56,10 +56,13 @@ class Texture2D {
   // Bytes one texel occupies in memory (4 for 8-bit encodings, 16 for Float32).
   int bytes_per_texel() const;
 
-  // Simulated memory layout (for the texture-cache model): each texture is given, at
-  // creation, a 4 KiB-aligned range of a process-wide address space, textures one after
-  // another in creation order, levels one after another inside it. Sampling reports the byte
-  // address of every texel it reads to the thread's texel trace (raster/texel_trace.h).
+  // Simulated memory layout (for the texture-cache model): each texture owns the region
+  // id << kTextureIdShift (ids in creation order), levels one after another inside it, and
+  // reserves its size rounded up to 4 KiB. Sampling reports the byte address of every texel it
+  // reads to the thread's texel trace (raster/texel_trace.h); the cache model places regions
+  // at frame-local addresses in first-use order.
+  static constexpr int kTextureIdShift = 40;
+  static uint64_t reserved_bytes_of(uint64_t texture_id);
   uint64_t base_address() const;
   uint64_t level_offset_bytes(int level) const;  // prefix sum of the sizes of levels < level
   int memory_bytes_per_texel() const;            // bytes_per_texel() unless a surface snapshot

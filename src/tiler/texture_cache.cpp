@@ -2,6 +2,8 @@
 // and the replay of the tiles' texture granules in tile-index order.
 #include "tiler/texture_cache.h"
 
+#include "raster/texture.h"
+
 #include <bit>
 #include <string>
 
@@ -64,6 +66,20 @@ bool TextureCache::access(uint64_t granule) {
   return hit;
 }
 
+uint64_t TextureCache::frame_granule(uint64_t traced_granule) {
+  constexpr int kIdShift = Texture2D::kTextureIdShift - 6;  // granules are bytes / 64
+  const uint64_t id = traced_granule >> kIdShift;
+  if (id == 0) return traced_granule;
+  auto it = frame_base_granule_.find(id);
+  if (it == frame_base_granule_.end()) {
+    // Frame-local placement starts above the id-0 range so the two never overlap.
+    if (next_frame_granule_ == 0) next_frame_granule_ = uint64_t{1} << kIdShift;
+    it = frame_base_granule_.emplace(id, next_frame_granule_).first;
+    next_frame_granule_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
+  }
+  return it->second + (traced_granule & ((uint64_t{1} << kIdShift) - 1));
+}
+
 // Tiles in index order, each tile's granules in the order its fetches touched them: the same
 // sequence whatever thread ran each tile, so the counts are deterministic.
 TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
@@ -71,7 +87,7 @@ TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<Tile
   for (const TileTrace& trace : traces) {
     for (const uint64_t granule : trace.texture_granules) {
       ++traffic.accesses;
-      if (cache.access(granule)) {
+      if (cache.access(cache.frame_granule(granule))) {
         ++traffic.hits;
       } else {
         ++traffic.misses;

@@ -2,6 +2,7 @@
 // texture fetches touched, replayed in tile-index order so hits and misses are deterministic.
 #pragma once
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "tiler/tile_trace.h"
@@ -27,12 +28,18 @@ class TextureCache {
   explicit TextureCache(const TextureCacheConfig& config);  // throws ontile::Error if invalid
   // Looks up the line holding `granule`; returns true on a hit. Misses fill the LRU way.
   bool access(uint64_t granule);
+  // Maps a traced texture granule (texture region id << 34 | offset) to this frame's address
+  // space: each texture is placed, 4 KiB aligned, after the ones used before it in this frame.
+  // Granules outside any texture region (id 0) are used as they are.
+  uint64_t frame_granule(uint64_t traced_granule);
   const TextureCacheConfig& config() const { return config_; }
 
  private:
   TextureCacheConfig config_;
   uint32_t sets_ = 0;
   std::vector<uint64_t> tags_;  // sets_ x ways, each set most recently used first, ~0 = empty
+  std::map<uint64_t, uint64_t> frame_base_granule_;  // texture id -> first granule this frame
+  uint64_t next_frame_granule_ = 0;
 };
 
 // Feeds every tile's texture granules through the cache, tiles in index order.

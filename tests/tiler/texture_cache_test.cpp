@@ -154,7 +154,7 @@ uint64_t granule_of(const Texture2D& t, int level, int x, int y) {
   return t.texel_address(level, x, y) / 64;
 }
 
-TEST(TextureAddresses, TexturesAreLaidOutInCreationOrderWithTheirMipChains) {
+TEST(TextureAddresses, EachTextureOwnsARegionAndReservesItsMipChain) {
   const auto a = rgba8_texture(64, 64);
   const auto b = rgba8_texture(3, 5);
   const auto c = rgba8_texture(8, 8);
@@ -163,13 +163,32 @@ TEST(TextureAddresses, TexturesAreLaidOutInCreationOrderWithTheirMipChains) {
   EXPECT_EQ(a->level_offset_bytes(0), 0u);
   EXPECT_EQ(a->level_offset_bytes(1), 64u * 64 * 4);
   EXPECT_EQ(a->level_offset_bytes(2), 64u * 64 * 4 + 32 * 32 * 4);
+  const uint64_t id_a = a->base_address() >> Texture2D::kTextureIdShift;
+  EXPECT_EQ(b->base_address() >> Texture2D::kTextureIdShift, id_a + 1) << "ids in creation order";
+  EXPECT_EQ(c->base_address() >> Texture2D::kTextureIdShift, id_a + 2);
   // 64x64 chain: 4 * (4096 + 1024 + 256 + 64 + 16 + 4 + 1) = 21844 bytes -> 6 pages.
-  EXPECT_EQ(b->base_address(), a->base_address() + 6 * 4096);
-  EXPECT_EQ(c->base_address(), b->base_address() + 4096);  // 3x5 chain fits one page
+  EXPECT_EQ(Texture2D::reserved_bytes_of(id_a), 6u * 4096);
+  EXPECT_EQ(Texture2D::reserved_bytes_of(id_a + 1), 4096u);  // 3x5 chain fits one page
   EXPECT_EQ(a->texel_address(1, 3, 2), a->base_address() + 64 * 64 * 4 + (2 * 32 + 3) * 4);
   const auto f = Texture2D::from_rgba32f(2, 2, std::vector<float>(16, 0.0f), "f");
   EXPECT_EQ(f->memory_bytes_per_texel(), 16);
   EXPECT_EQ(f->texel_address(0, 1, 1), f->base_address() + 3 * 16);
+}
+
+TEST(TextureAddresses, FramePlacementFollowsFirstUseNotCreationOrder) {
+  // Textures used in the order c, a: c lands first in the frame, a right after c's reserve.
+  const auto a = rgba8_texture(64, 64);
+  const auto c = rgba8_texture(8, 8);
+  TextureCache cache(TextureCacheConfig{});
+  const uint64_t c0 = cache.frame_granule(granule_of(*c, 0, 0, 0));
+  const uint64_t a0 = cache.frame_granule(granule_of(*a, 0, 0, 0));
+  EXPECT_EQ(a0, c0 + 4096 / 64);
+  EXPECT_EQ(cache.frame_granule(granule_of(*a, 0, 16, 0)), a0 + 1);
+  EXPECT_EQ(cache.frame_granule(granule_of(*c, 0, 0, 0)), c0) << "stable within the frame";
+  // A fresh frame (cache) placing a first gives a the same address c had.
+  TextureCache next(TextureCacheConfig{});
+  EXPECT_EQ(next.frame_granule(granule_of(*a, 0, 0, 0)), c0);
+  EXPECT_EQ(next.frame_granule(1000), 1000u) << "raw granules (no texture) pass through";
 }
 
 TEST(TextureTrace, NearestSampleAtATexelCentreRecordsOneGranule) {
