@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "raster/texel_trace.h"
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
 
@@ -11,6 +12,59 @@ namespace ontile {
 namespace {
 
 constexpr float kMinOneMinusDepth = 5.9604645e-8f;  // 2^-24
+// Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
+constexpr float kMaxExactTexelCoord = 16777216.0f;
+constexpr int kTapsPerAxis = 3;
+constexpr int kTaps = kTapsPerAxis * kTapsPerAxis;
+constexpr int kCentreTap = 4;
+// Distinct tap columns (or rows) of one quad: at most 3 per lane.
+constexpr int kAxisSlots = kQuadLanes * kTapsPerAxis;
+
+// The texel index along one axis that Texture2D::sample_lod reads for a nearest, clamp-to-edge
+// sample of level 0 at normalized coordinate u (texture.cpp: finite_or_zero, texel_coord,
+// floor, wrap_texel_index; i = floor(u * size), OpenGL 4.6 eq. 8.9), operation for operation,
+// so a direct fetch reads exactly the texel that sampling the tap would.
+int nearest_clamped_texel(float u, int size) {
+  if (!std::isfinite(u)) u = 0.0f;
+  if (!(std::fabs(u) < kMaxExactTexelCoord)) u = std::copysign(kMaxExactTexelCoord, u);
+  float x = u * static_cast<float>(size);
+  if (!(std::fabs(x) < kMaxExactTexelCoord)) x = std::copysign(kMaxExactTexelCoord, x);
+  const int i = static_cast<int>(std::floor(x));
+  return i < 0 ? 0 : (i < size ? i : size - 1);
+}
+
+// The distinct texel indices along one axis that a quad's taps use, in order of first use:
+// a tap's texel is the cell (row slot, column slot) of a small grid shared by the quad's lanes.
+class AxisTexels {
+ public:
+  int slot_of(int index) {
+    for (int s = 0; s < count_; ++s) {
+      if (indices_[s] == index) return s;
+    }
+    indices_[count_] = index;
+    return count_++;
+  }
+
+ private:
+  int indices_[kAxisSlots];
+  int count_ = 0;
+};
+
+// One bit per grid cell: which texels of the quad have been read and decoded.
+class CellSet {
+ public:
+  bool contains(int cell) const { return (words_[cell >> 6] >> (cell & 63)) & 1u; }
+  void insert(int cell) { words_[cell >> 6] |= uint64_t{1} << (cell & 63); }
+
+ private:
+  uint64_t words_[(kAxisSlots * kAxisSlots + 63) / 64] = {};
+};
+
+// One lane's taps: tap k is texel (x[k % 3], y[k / 3]), grid cell cell[k].
+struct LaneTaps {
+  int x[kTapsPerAxis], y[kTapsPerAxis];
+  int cell[kTaps];
+};
 
 std::string size_text(const Texture2D& t) {
   return std::to_string(t.width()) + "x" + std::to_string(t.height());
@@ -78,6 +132,12 @@ glm::vec2 view_ray_scale(const glm::dmat4& projection) {
   return {static_cast<float>(1.0 / projection[0][0]), static_cast<float>(1.0 / projection[1][1])};
 }
 
+SobelEdgeShader::TexelAddressing SobelEdgeShader::addressing_of(const Texture2D* texture) {
+  if (!texture) return {};
+  return {texture->texel_address(0, 0, 0), static_cast<uint64_t>(texture->memory_bytes_per_texel()),
+          texture->width(), texture->height()};
+}
+
 SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
   if (!p_.color) throw Error("SobelEdgeShader: no scene colour texture");
   if (!p_.depth) throw Error("SobelEdgeShader: no depth texture");
@@ -92,57 +152,145 @@ SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
                 " far " + std::to_string(l.far_plane) +
                 (l.orthographic ? " (orthographic)" : " (perspective)"));
   }
-  sampler_.mag_filter = FilterMode::Nearest;
-  sampler_.min_filter = FilterMode::Nearest;
-  sampler_.mipmap_mode = MipmapMode::None;
-  sampler_.wrap_u = WrapMode::ClampToEdge;
-  sampler_.wrap_v = WrapMode::ClampToEdge;
   tap_step_uv_ = glm::vec2(p_.thickness_px / static_cast<float>(p_.depth->width()),
                            p_.thickness_px / static_cast<float>(p_.depth->height()));
+  color_addressing_ = addressing_of(p_.color);
+  depth_addressing_ = addressing_of(p_.depth);
+  normal_addressing_ = addressing_of(p_.normal);
+  border_addressing_ = addressing_of(p_.border);
+}
+
+void SobelEdgeShader::shade_lanes(const glm::vec2 uv[kQuadLanes], uint8_t lane_mask,
+                                  glm::vec4 out[kQuadLanes]) const {
+  const auto active = [lane_mask](int lane) { return ((lane_mask >> lane) & 1u) != 0u; };
+  // Tap k of a lane is column offset k % 3 - 1 and row offset k / 3 - 1, in steps of
+  // tap_step_uv_; its uv is uv + offset * step per axis, as the per-tap sampling computed it.
+  // Depth, normal and border have the same size (checked at construction): the same texels.
+  const TexelAddressing& grid = depth_addressing_;
+  AxisTexels columns, rows;
+  LaneTaps taps[kQuadLanes];
+  int color_x[kQuadLanes], color_y[kQuadLanes];
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (!active(lane)) continue;
+    LaneTaps& t = taps[lane];
+    int column_slot[kTapsPerAxis], row_slot[kTapsPerAxis];
+    for (int a = 0; a < kTapsPerAxis; ++a) {
+      const float offset = static_cast<float>(a - 1);
+      t.x[a] = nearest_clamped_texel(uv[lane].x + offset * tap_step_uv_.x, grid.width_px);
+      t.y[a] = nearest_clamped_texel(uv[lane].y + offset * tap_step_uv_.y, grid.height_px);
+      column_slot[a] = columns.slot_of(t.x[a]);
+      row_slot[a] = rows.slot_of(t.y[a]);
+    }
+    for (int k = 0; k < kTaps; ++k) {
+      t.cell[k] = row_slot[k / kTapsPerAxis] * kAxisSlots + column_slot[k % kTapsPerAxis];
+    }
+    color_x[lane] = nearest_clamped_texel(uv[lane].x, color_addressing_.width_px);
+    color_y[lane] = nearest_clamped_texel(uv[lane].y, color_addressing_.height_px);
+  }
+  // Decoded texels by grid cell, each read on first use.
+  float cell_depth[kAxisSlots * kAxisSlots], cell_linear_z[kAxisSlots * kAxisSlots];
+  glm::vec3 cell_normal[kAxisSlots * kAxisSlots];
+  CellSet depth_read, normal_read;
+  // What each lane read beyond its depth taps, for the trace.
+  bool read_all_normals[kQuadLanes] = {};
+  int border_tap[kQuadLanes] = {-1, -1, -1, -1};
+  {
+    // Reads here are not traced: the per-tap sequence is reported below.
+    const TexelTraceScope untraced(nullptr);
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!active(lane)) continue;
+      const LaneTaps& t = taps[lane];
+      float depth[kTaps], linear_z[kTaps];
+      for (int k = 0; k < kTaps; ++k) {
+        const int cell = t.cell[k];
+        if (!depth_read.contains(cell)) {
+          cell_depth[cell] = p_.depth->fetch(0, t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]).x;
+          cell_linear_z[cell] = linearize_depth(cell_depth[cell], p_.depth_linearization);
+          depth_read.insert(cell);
+        }
+        depth[k] = cell_depth[cell];
+        linear_z[k] = cell_linear_z[cell];
+      }
+      // The centre keeps ties, so neighbouring bordered materials at equal depth keep their
+      // own line.
+      int nearest = kCentreTap;
+      for (int k = 0; k < kTaps; ++k) {
+        if (depth[k] < depth[nearest]) nearest = k;
+      }
+      float depth_limit = p_.depth_threshold * p_.depth_sensitivity * linear_z[kCentreTap];
+      const auto normal_at = [&](int k) {
+        const int cell = t.cell[k];
+        if (!normal_read.contains(cell)) {
+          cell_normal[cell] = decode_view_normal(
+              p_.normal->fetch(0, t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]),
+              p_.normal_encoding);
+          normal_read.insert(cell);
+        }
+        return cell_normal[cell];
+      };
+      glm::vec3 normals[kTaps];
+      if (p_.normal) {
+        normals[kCentreTap] = normal_at(kCentreTap);
+        depth_limit /= grazing_cosine(normals[kCentreTap], uv[lane]);
+      }
+      bool edge = sobel_magnitude(linear_z) > depth_limit;
+      if (!edge && p_.normal) {  // the other normal taps only matter when depth found no edge
+        for (int k = 0; k < kTaps; ++k) {
+          if (k != kCentreTap) normals[k] = normal_at(k);
+        }
+        read_all_normals[lane] = true;
+        edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
+      }
+      const glm::vec4 scene = p_.color->fetch(0, color_x[lane], color_y[lane]);
+      if (!edge) {
+        out[lane] = scene;
+        continue;
+      }
+      glm::vec4 border = p_.default_border_color;
+      if (p_.border) {
+        border = p_.border->fetch(0, t.x[nearest % kTapsPerAxis], t.y[nearest / kTapsPerAxis]);
+        border_tap[lane] = nearest;
+      }
+      out[lane] = glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
+    }
+  }
+  // The texel trace of sampling every tap separately, lane by lane (see the class comment).
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (!active(lane)) continue;
+    const LaneTaps& t = taps[lane];
+    const auto record_tap = [&t](const TexelAddressing& a, int k) {
+      record_texel_address(a.address(t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]));
+    };
+    for (int k = 0; k < kTaps; ++k) record_tap(depth_addressing_, k);
+    if (p_.normal) {
+      record_tap(normal_addressing_, kCentreTap);
+      if (read_all_normals[lane]) {
+        for (int k = 0; k < kTaps; ++k) {
+          if (k != kCentreTap) record_tap(normal_addressing_, k);
+        }
+      }
+    }
+    record_texel_address(color_addressing_.address(color_x[lane], color_y[lane]));
+    if (border_tap[lane] >= 0) record_tap(border_addressing_, border_tap[lane]);
+  }
 }
 
 glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
-  glm::vec2 tap_uv[9];
-  float linear_z[9];
-  float depth[9];
-  for (int k = 0; k < 9; ++k) {
-    tap_uv[k] = uv + glm::vec2(static_cast<float>(k % 3 - 1), static_cast<float>(k / 3 - 1)) *
-                         tap_step_uv_;
-    depth[k] = p_.depth->sample_lod(sampler_, tap_uv[k], 0.0f).x;
-    linear_z[k] = linearize_depth(depth[k], p_.depth_linearization);
-  }
-  // The centre keeps ties, so neighbouring bordered materials at equal depth keep their own line.
-  int nearest = 4;
-  for (int k = 0; k < 9; ++k) {
-    if (depth[k] < depth[nearest]) nearest = k;
-  }
-  float depth_limit = p_.depth_threshold * p_.depth_sensitivity * linear_z[4];
-  const auto normal_at = [&](int k) {
-    return decode_view_normal(p_.normal->sample_lod(sampler_, tap_uv[k], 0.0f), p_.normal_encoding);
-  };
-  glm::vec3 normals[9];
-  if (p_.normal) {
-    normals[4] = normal_at(4);
-    depth_limit /= grazing_cosine(normals[4], uv);
-  }
-  bool edge = sobel_magnitude(linear_z) > depth_limit;
-  if (!edge && p_.normal) {  // the other normal taps only matter when depth found no edge
-    for (int k = 0; k < 9; ++k) {
-      if (k != 4) normals[k] = normal_at(k);
-    }
-    edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
-  }
-  const glm::vec4 scene = p_.color->sample_lod(sampler_, uv, 0.0f);
-  if (!edge) return scene;
-  const glm::vec4 border =
-      p_.border ? p_.border->sample_lod(sampler_, tap_uv[nearest], 0.0f) : p_.default_border_color;
-  return glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
+  const glm::vec2 lane_uv[kQuadLanes] = {uv, uv, uv, uv};
+  glm::vec4 out[kQuadLanes];
+  shade_lanes(lane_uv, 0x1, out);
+  return out[0];
 }
 
 void SobelEdgeShader::shade(const QuadFragment& quad, QuadOutput& out) const {
+  glm::vec2 uv[kQuadLanes];
   for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!quad.lane_active(lane)) continue;
-    out.color[0][lane] = shade_pixel(quad.var2(FullScreenVertexShader::kUv, lane));
+    uv[lane] = quad.var2(FullScreenVertexShader::kUv, lane);
+  }
+  glm::vec4 colour[kQuadLanes];
+  shade_lanes(uv, quad.lane_mask, colour);
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (quad.lane_active(lane)) out.color[0][lane] = colour[lane];
   }
 }
 

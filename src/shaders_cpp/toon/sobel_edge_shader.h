@@ -2,6 +2,8 @@
 // linear depth and view-space normals and draws the border colour of the nearest surface where
 // either gradient is large. Reads the G-buffer as textures (nearest, clamp): a separate pass.
 #pragma once
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
@@ -77,6 +79,15 @@ glm::vec2 view_ray_scale(const glm::dmat4& projection);
 // it, else the first in row-major order): a silhouette, drawn on the pixels of both sides, takes
 // the border colour of the object in front, and a front object whose border alpha is 0 draws no
 // line even against a bordered background. Outputs colour only, to colour target 0.
+//
+// Every tap is a nearest, clamp-to-edge read of level 0 (Texture2D::sample_lod with lod 0):
+// the texel is floor(tap uv * size) clamped to the texture, computed with exactly sample_lod's
+// float arithmetic. The texel trace (raster/texel_trace.h) receives, per active lane in lane
+// order, the texels of that per-tap sampling: the 9 depth taps in row-major order; the normal
+// centre tap; the other 8 normal taps only when depth found no edge; the colour at uv; the
+// border at the nearest tap only on an edge. So the simulated texture traffic is that of a GPU
+// shader sampling each tap, while the C++ code reads each distinct texel of a quad only once
+// (at 1 px spacing the 4 x 9 taps of a full quad are 16 distinct texels).
 class SobelEdgeShader final : public FragmentShader {
  public:
   // Throws Error for missing colour/depth textures, a normal or border texture whose size
@@ -84,17 +95,34 @@ class SobelEdgeShader final : public FragmentShader {
   explicit SobelEdgeShader(const SobelEdgeParams& params);
   void shade(const QuadFragment& quad, QuadOutput& out) const override;
 
-  // The output colour at one uv (what shade() writes for a lane).
+  // The output colour at one uv (what shade() writes for a lane), with the same texel trace.
   glm::vec4 shade_pixel(glm::vec2 uv) const;
 
  private:
+  // Level 0's size and place in the simulated address space: texel (x, y) is at
+  // origin + (y * width + x) * bytes_per_texel (Texture2D::texel_address).
+  struct TexelAddressing {
+    uint64_t origin = 0;
+    uint64_t bytes_per_texel = 0;
+    int width_px = 0, height_px = 0;
+    uint64_t address(int x, int y) const {
+      return origin + (static_cast<uint64_t>(y) * static_cast<uint64_t>(width_px) +
+                       static_cast<uint64_t>(x)) * bytes_per_texel;
+    }
+  };
+  static TexelAddressing addressing_of(const Texture2D* texture);
+
+  // Shades the lanes of lane_mask at uv[lane] into out[lane] (see the class comment).
+  void shade_lanes(const glm::vec2 uv[kQuadLanes], uint8_t lane_mask,
+                   glm::vec4 out[kQuadLanes]) const;
+
   // |cos| of the angle between the centre's normal and the view ray at uv, at least
   // min_grazing_cosine (also for a zero normal: an uncovered background pixel).
   float grazing_cosine(glm::vec3 view_normal, glm::vec2 uv) const;
 
   SobelEdgeParams p_;
-  SamplerDesc sampler_;
   glm::vec2 tap_step_uv_;
+  TexelAddressing color_addressing_, depth_addressing_, normal_addressing_, border_addressing_;
 };
 
 }  // namespace ontile
