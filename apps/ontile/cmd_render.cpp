@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "context/frame_report.h"
 #include "io/image_io.h"
+#include "pipelines/aov/aov_pass.h"
 #include "pipelines/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
@@ -16,7 +17,7 @@ namespace ontile::cli {
 namespace {
 
 struct RenderOptions {
-  std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr";
+  std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights;
   int camera = -1, threads = 0, tile = 16, budget = 128;
   int texture_cache_kib = 256, rt_cache_kib = 128;
   std::vector<std::string> pipeline_options;
@@ -51,6 +52,22 @@ void write_color(const std::filesystem::path& path, const Surface& color) {
   }
 }
 
+// --aov: the AOV pass instead of the pipeline's image, written as a float EXR.
+void run_aov_render(const RenderOptions& o, const RenderSettings& settings) {
+  const AovKind kind = *parse_aov_kind(o.aov);
+  const std::filesystem::path out(o.out);
+  if (out.extension() != ".exr") {
+    throw Error(o.out + ": --aov writes float channels; use an .exr output");
+  }
+  const Scene scene = load_gltf(o.scene);
+  const AovFrame frame = render_aov_frame(scene, settings, {kind});
+  ensure_parent_folder(out);
+  write_exr_channels(out, settings.width_px, settings.height_px, aov_channel_names(kind),
+                     aov_channels(*frame.surfaces[0], kind));
+  std::printf("%s: %dx%d, AOV %s, %.1f ms on %d threads\nwrote %s\n", o.scene.c_str(), settings.width_px,
+              settings.height_px, o.aov.c_str(), frame.report.total_ms, frame.report.threads, o.out.c_str());
+}
+
 void run_render(const RenderOptions& o) {
   RenderSettings settings;
   parse_size(o.size, settings.width_px, settings.height_px);
@@ -61,6 +78,10 @@ void run_render(const RenderOptions& o) {
     if (eq == std::string::npos || eq == 0) throw Error("--set '" + kv + "': expected KEY=VALUE");
     settings.options.set(kv.substr(0, eq), kv.substr(eq + 1));
   }
+  // Shorthands for the forward and deferred pipelines' options (an unknown option is still an
+  // error for pipelines without them).
+  if (!o.gbuffer.empty()) settings.options.set("gbuffer", o.gbuffer);
+  if (!o.lights.empty()) settings.options.set("lights", o.lights);
   settings.context.threads = o.threads;
   settings.context.tiler.tile_size_px = o.tile;
   settings.context.tiler.color_budget_bits_per_px = o.budget;
@@ -71,6 +92,11 @@ void run_render(const RenderOptions& o) {
   const std::string ext = out.extension().string();
   if (ext != ".png" && ext != ".exr") {
     throw Error(o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
+  }
+  if (!o.aov.empty()) {
+    if (!o.report.empty()) throw Error("--report: not available with --aov");
+    run_aov_render(o, settings);
+    return;
   }
   const Scene scene = load_gltf(o.scene);
   const RenderedFrame frame = render_frame(scene, settings);
@@ -137,6 +163,10 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--budget", o->budget, "Tile-memory colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 4096));
   cmd->add_option("--report", o->report, "Write the JSON traffic report here");
+  cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr)")
+      ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
+  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
+  cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));

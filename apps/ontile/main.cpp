@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
   ontile::cli::add_gen_scene_command(app);
   ontile::cli::add_pipelines_command(app);
   ontile::cli::add_golden_command(app);
+  ontile::cli::add_reference_command(app);
+  ontile::cli::add_accuracy_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,8 @@
 // CommandBuffer recording (see command_buffer.h).
 #include "context/command_buffer.h"
 
+#include "util/error.h"
+
 namespace ontile {
 
 void CommandBuffer::set_render_target(std::vector<TargetBinding> colors,
@@ -48,6 +50,11 @@ void CommandBuffer::draw_mesh(const MeshPrimitive& mesh, const glm::dmat4& world
                               const RenderMaterial* material, const std::string& pass_name,
                               uint32_t primitive_id_base) {
   commands_.push_back(op::DrawMesh{&mesh, world, material, pass_name, primitive_id_base});
+}
+
+void CommandBuffer::draw_full_screen(const RenderMaterial* material, const std::string& pass_name) {
+  if (!material) throw Error("draw_full_screen: no material (pass '" + pass_name + "')");
+  commands_.push_back(op::DrawFullScreen{material, pass_name});
 }
 
 }  // namespace ontile

@@ -49,6 +49,10 @@ struct DrawMesh {
   uint32_t primitive_id_base;
 };
 struct DrawSkybox { CameraMatrices camera; };
+struct DrawFullScreen {
+  const RenderMaterial* material;
+  std::string pass_name;
+};
 struct Blit {
   RenderTargetRef source, destination;
   const RenderMaterial* material;
@@ -66,7 +70,7 @@ struct ReleaseTemporaryRT { int id; };
 using Command = std::variant<op::BeginRenderPass, op::BeginSubpass, op::EndSubpass,
                              op::EndRenderPass, op::RawDraw, op::SetRenderTarget,
                              op::ClearRenderTarget, op::DrawRenderers, op::DrawMesh,
-                             op::DrawSkybox, op::Blit, op::SetGlobalTexture, op::SetGlobalFloat,
+                             op::DrawSkybox, op::DrawFullScreen, op::Blit, op::SetGlobalTexture, op::SetGlobalFloat,
                              op::SetGlobalVector, op::SetGlobalMatrix, op::SetViewProjection,
                              op::GetTemporaryRT, op::ReleaseTemporaryRT>;
 
@@ -96,6 +100,11 @@ class CommandBuffer {
   void set_view_projection(const glm::dmat4& view, const glm::dmat4& projection);
   void draw_mesh(const MeshPrimitive& mesh, const glm::dmat4& world, const RenderMaterial* material,
                  const std::string& pass_name, uint32_t primitive_id_base = 0);
+
+  // A full-screen triangle drawn with the material's pass into the current subpass (Unity's
+  // DrawProcedural of 3 vertices, as deferred lighting uses); textures bound to render targets
+  // are resolved when the commands execute, so it may read what earlier passes stored.
+  void draw_full_screen(const RenderMaterial* material, const std::string& pass_name);
 
   const std::vector<Command>& commands() const { return commands_; }
   void clear() { commands_.clear(); }

@@ -28,6 +28,10 @@ bool box_outside(const std::array<glm::dvec4, 6>& planes, const Bounds& b) {
 
 }  // namespace
 
+bool box_outside_frustum(const glm::dmat4& view_projection, const Bounds& box) {
+  return box_outside(frustum_planes(view_projection), box);
+}
+
 CullingResults cull_renderers(const std::vector<Renderer>& renderers, const CameraMatrices& camera,
                               const CullingParameters& params) {
   CullingResults r;

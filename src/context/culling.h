@@ -31,6 +31,10 @@ struct CullingResults {
 
 // Keeps the renderers whose world bounds intersect the camera frustum (Gribb-Hartmann planes of
 // the view-projection matrix, depth in [0, 1]) and whose layer is in the mask.
+// True when the box lies entirely outside one of the frustum planes (conservative: a box near a
+// frustum corner may be kept although it is outside).
+bool box_outside_frustum(const glm::dmat4& view_projection, const Bounds& box);
+
 CullingResults cull_renderers(const std::vector<Renderer>& renderers, const CameraMatrices& camera,
                               const CullingParameters& params);
 

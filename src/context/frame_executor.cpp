@@ -322,6 +322,14 @@ void FrameExecutor::operator()(const op::DrawSkybox& c) {
   add_full_screen_draw(std::make_unique<FullScreenVertexShader>(1.0f, &inverse_vp), std::move(sky), state);
 }
 
+void FrameExecutor::operator()(const op::DrawFullScreen& c) {
+  const ShaderPass* pass = c.material->shader->find_pass(c.pass_name);
+  if (!pass) {
+    throw Error("draw_full_screen: shader '" + c.material->shader->name() + "' has no pass '" + c.pass_name + "'");
+  }
+  draw_with_pass(nullptr, glm::dmat4(1.0), *c.material, *pass, 0);
+}
+
 void FrameExecutor::operator()(const op::Blit& c) {
   if (pass_ && !pass_->implicit) throw Error("blit inside render pass '" + pass_->desc.name + "'");
   if (pass_) close_pass();

@@ -28,6 +28,7 @@ class FrameExecutor {
   void operator()(const op::DrawRenderers& c);
   void operator()(const op::DrawMesh& c);
   void operator()(const op::DrawSkybox& c);
+  void operator()(const op::DrawFullScreen& c);
   void operator()(const op::Blit& c);
   void operator()(const op::SetGlobalTexture& c) { globals_.textures[c.name] = c.binding; }
   void operator()(const op::SetGlobalFloat& c) { globals_.floats[c.name] = c.value; }

@@ -57,6 +57,7 @@ class RenderContext : private CommandBuffer {
   // The recording API of command buffers is available on the context too.
   using CommandBuffer::blit;
   using CommandBuffer::clear_render_target;
+  using CommandBuffer::draw_full_screen;
   using CommandBuffer::draw_mesh;
   using CommandBuffer::get_temporary_rt;
   using CommandBuffer::release_temporary_rt;

@@ -14,9 +14,15 @@ namespace ontile {
 std::vector<GoldenCase> golden_cases(const std::filesystem::path& source_dir,
                                      const std::filesystem::path& shared_assets) {
   std::vector<GoldenCase> cases;
+  const std::filesystem::path demo = source_dir / "scenes" / "demo.glb";
   for (const std::string& p : pipeline_names()) {
-    cases.push_back({"demo_" + p, source_dir / "scenes" / "demo.glb", p});
+    GoldenCase c{"demo_" + p, demo, p};
+    // The forward and deferred pipelines are shown with generated point lights.
+    if (p == "forward" || p.starts_with("deferred")) c.options = {{"lights", "16"}};
+    cases.push_back(c);
   }
+  cases.push_back({"demo_deferred-subpass_unity", demo, "deferred-subpass", 480, 270, {{"gbuffer", "unity"}, {"lights", "16"}}});
+  cases.push_back({"demo_forward_msaa4", demo, "forward", 480, 270, {{"msaa", "4"}, {"lights", "16"}}});
   for (const auto& [stem, relative] : {std::pair{"DamagedHelmet", "DamagedHelmet/DamagedHelmet.glb"},
                                        std::pair{"Duck", "Duck/Duck.gltf"}}) {
     for (const std::string p : {"lambert", "cartoon"}) {
@@ -43,6 +49,7 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
   settings.width_px = c.width_px;
   settings.height_px = c.height_px;
   settings.context.threads = 2;
+  for (const auto& [key, value] : c.options) settings.options.set(key, value);
   const RenderedFrame frame = render_frame(scene, settings);
   const Surface& color = *frame.outputs.color;
   if (color.format() != PixelFormat::RGBA8_SRGB && color.format() != PixelFormat::RGBA8_UNORM) {

@@ -4,6 +4,7 @@
 #pragma once
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ontile {
@@ -13,6 +14,7 @@ struct GoldenCase {
   std::filesystem::path scene;
   std::string pipeline;
   int width_px = 480, height_px = 270;
+  std::vector<std::pair<std::string, std::string>> options;  // pipeline options (--set)
 };
 
 struct GoldenResult {

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "pipelines/cartoon/cartoon_pipelines.h"
+#include "pipelines/deferred/deferred_pipelines.h"
 #include "pipelines/lambert_pipeline.h"
 #include "pipelines/universal/universal_pipeline.h"
 #include "util/error.h"
@@ -17,6 +18,9 @@ const std::map<std::string, std::function<std::unique_ptr<Pipeline>()>>& registr
       {"cartoon", [] { return std::make_unique<CartoonPipeline>(false); }},
       {"cartoon-multipass", [] { return std::make_unique<CartoonPipeline>(true); }},
       {"cartoon-hull", [] { return std::make_unique<CartoonHullPipeline>(); }},
+      {"deferred-classic", [] { return std::make_unique<DeferredPipeline>(false); }},
+      {"deferred-subpass", [] { return std::make_unique<DeferredPipeline>(true); }},
+      {"forward", [] { return std::make_unique<ForwardPipeline>(); }},
   };
   return r;
 }

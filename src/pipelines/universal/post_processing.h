@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "context/render_context.h"
+#include "shaders_cpp/tone_curves.h"
 
 namespace ontile {
 
@@ -17,8 +18,6 @@ enum class Tonemapper {
 
 // Both tonemappers take scene-linear Rec.709 colour and return display-linear [0, 1] colour;
 // the sRGB target's encoding applies the transfer function.
-glm::vec3 tonemap_aces_fitted(glm::vec3 color);
-glm::vec3 tonemap_reinhard(glm::vec3 color);
 // "aces" or "reinhard"; anything else throws Error naming the option value.
 Tonemapper parse_tonemapper(const std::string& name);
 

@@ -8,8 +8,6 @@
 namespace ontile {
 namespace {
 
-constexpr float kMinDistanceSquared = 1e-4f;
-
 float luminance(glm::vec3 rgb) { return glm::dot(rgb, glm::vec3(0.2126f, 0.7152f, 0.0722f)); }
 
 std::string indexed(const char* name, size_t i) { return name + std::to_string(i); }
@@ -57,21 +55,6 @@ UniversalLights universal_lights(const Scene& scene) {
     out.additional.push_back(a);
   }
   return out;
-}
-
-float range_attenuation(float distance_squared, float range) {
-  const float d2 = std::max(distance_squared, kMinDistanceSquared);
-  if (range <= 0.0f) return 1.0f / d2;
-  const float ratio2 = d2 / (range * range);  // (d / range)^2
-  const float window = std::clamp(1.0f - ratio2 * ratio2, 0.0f, 1.0f);
-  return window / d2;
-}
-
-float spot_attenuation(const AdditionalLight& light, glm::vec3 light_to_surface) {
-  if (light.type != AdditionalLight::Type::Spot) return 1.0f;
-  const float cd = glm::dot(light.direction, light_to_surface);
-  const float a = std::clamp(cd * light.spot_scale + light.spot_offset, 0.0f, 1.0f);
-  return a * a;
 }
 
 float light_influence(const AdditionalLight& light, const Bounds& b) {

@@ -10,6 +10,7 @@
 #include "context/command_buffer.h"
 #include "context/property_block.h"
 #include "scene/scene.h"
+#include "shaders_cpp/lighting/punctual_light.h"
 
 namespace ontile {
 
@@ -23,18 +24,8 @@ struct MainLight {
   glm::vec3 radiance{1.0f};              // colour x intensity x exposure
 };
 
-struct AdditionalLight {
-  enum class Type { Point, Spot, Directional } type = Type::Point;
-  glm::vec3 position{0.0f};
-  // colour x intensity x exposure: candela for point and spot lights, before the distance
-  // falloff; a directional light's radiance
-  glm::vec3 intensity{1.0f};
-  float range = 0.0f;  // 0: infinite
-  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way the light travels (spot, directional)
-  // glTF KHR_lights_punctual cone falloff: saturate(cos(angle) * scale + offset)^2; a point
-  // light has scale 0, offset 1.
-  float spot_scale = 0.0f, spot_offset = 1.0f;
-};
+// Additional lights are glTF punctual lights (shaders_cpp/lighting/punctual_light.h).
+using AdditionalLight = PunctualLight;
 
 struct UniversalLights {
   MainLight main;
@@ -50,12 +41,7 @@ struct UniversalLights {
 // lights keep their strength relative to the sun. Without a directional light the scale is 1.
 UniversalLights universal_lights(const Scene& scene);
 
-// glTF KHR_lights_punctual recommended range attenuation of a point or spot light:
-// clamp(1 - (d / range)^4, 0, 1) / d^2 (range 0: 1 / d^2), with d^2 floored at 1e-4 so a
-// surface at the light stays finite.
-float range_attenuation(float distance_squared, float range);
-// The cone factor for a unit direction from the light to the surface (1 unless a spot light).
-float spot_attenuation(const AdditionalLight& light, glm::vec3 light_to_surface);
+// range_attenuation and spot_attenuation: shaders_cpp/lighting/punctual_light.h.
 
 // How strongly a light can reach a box: luminance of its intensity x range attenuation at the
 // box's closest point (the cone is ignored, so a spot is never wrongly dropped; directional
