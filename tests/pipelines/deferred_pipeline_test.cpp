@@ -85,7 +85,8 @@ TEST(DeferredPipelines, LightsChangeTheImageAndTransientOffDoesNot) {
   const Scene scene = load_gltf(kDemo);
   const RenderedFrame none = render(scene, "deferred-subpass", 160, 96);
   const RenderedFrame lit = render(scene, "deferred-subpass", 160, 96, {{"lights", "32"}});
-  const RenderedFrame stored = render(scene, "deferred-subpass", 160, 96, {{"lights", "32"}, {"transient", "off"}});
+  const RenderedFrame stored =
+      render(scene, "deferred-subpass", 160, 96, {{"lights", "32"}, {"transient", "off"}, {"gbuffer_store", "store"}});
   EXPECT_NE(none.outputs.color->bytes(), lit.outputs.color->bytes());
   EXPECT_EQ(lit.outputs.color->bytes(), stored.outputs.color->bytes());
 }
@@ -122,8 +123,14 @@ TEST(DeferredPipelines, AttachmentTrafficIsTheAnalyticPerPixelFormula) {
     EXPECT_EQ(r.bytes_by_category().at("attachment_store"), 4 * px);
     EXPECT_EQ(r.passes[0].texture.bytes_read, 0u);
   }
-  {  // subpasses with transient attachments off: the G-buffer and depth are written back too.
+  {  // transient attachments off: memory-backed but DONT_CARE, so nothing more is written...
     const FrameReport r = render(scene, "deferred-subpass", w, h, {{"transient", "off"}}).outputs.report;
+    EXPECT_FALSE(attachment(r, "deferred", "albedo").transient);
+    EXPECT_EQ(r.bytes_by_category().at("attachment_store"), 4 * px);
+  }
+  {  // ...unless they are stored: then the G-buffer and depth are written back too.
+    const FrameReport r =
+        render(scene, "deferred-subpass", w, h, {{"transient", "off"}, {"gbuffer_store", "store"}}).outputs.report;
     EXPECT_EQ(r.bytes_by_category().at("attachment_store"), 16 * px);
   }
   {  // unity, two passes + tonemap: G-buffer pass stores light 8 + diffuse, specular, normal,
@@ -214,6 +221,7 @@ TEST(DeferredPipelines, BadOptionsAreErrors) {
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"gbuffer", "fat"}}), Error);
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"lights", "-1"}}), Error);
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"transient", "off"}}), Error);
+  EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"gbuffer_store", "store"}}), Error);
   EXPECT_THROW(render(scene, "forward", 64, 64, {{"msaa", "3"}}), Error);
   EXPECT_THROW(render(scene, "forward", 64, 64, {{"resolve", "separate"}}), Error);
   EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"msaa", "4"}}), Error);

@@ -38,6 +38,10 @@ DeferredOptions parse_deferred_options(const PipelineOptions& options, DeferredV
   }
   if (variant == DeferredVariant::Subpass) {
     o.transient = parse_switch("transient", options.take("transient", "on"), "on", "off");
+    o.store_gbuffer = parse_switch("gbuffer_store", options.take("gbuffer_store", "dont-care"), "store", "dont-care");
+    if (o.store_gbuffer && o.transient) {
+      throw Error("pipeline option gbuffer_store=store needs transient=off (a transient attachment has no memory to store to)");
+    }
   }
   if (variant == DeferredVariant::Forward) {
     o.msaa_samples = parse_int("msaa", options.take("msaa", "1"), 1, 8);

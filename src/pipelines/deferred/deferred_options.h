@@ -10,7 +10,8 @@ struct DeferredOptions {
   GBufferLayout layout;
   int generated_lights = 0;
   bool tonemap = false;  // auto: on when the light target is HDR (float)
-  bool transient = true;
+  bool transient = true;         // subpass: G-buffer and depth without memory behind them
+  bool store_gbuffer = false;    // subpass: G-buffer and depth stored (needs transient off)
   int msaa_samples = 1;
   bool separate_resolve = false;
 };

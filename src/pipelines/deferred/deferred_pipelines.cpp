@@ -128,14 +128,15 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
     return out;
   }
 
-  // One render pass; G-buffer and depth live only in tile memory unless transient=off (then
-  // they are backed by memory and written back, as a driver does without lazily allocated
-  // memory: Vulkan-Samples render_subpasses, "Transient attachments").
+  // One render pass; G-buffer and depth live only in tile memory. transient=off backs them by
+  // memory as Vulkan-Samples' "transient attachments off" does (store op still DONT_CARE, so
+  // nothing more is written); gbuffer_store=store also writes them back, the cost the sample's
+  // tutorial warns of.
   Surface* light = options.tonemap ? nullptr : ctx.create_surface("light", layout.light_format, w, h);
   auto on_tile = [&](const std::string& name, PixelFormat format) -> Surface* {
     return options.transient ? nullptr : ctx.create_surface(name, format, w, h);
   };
-  const StoreAction on_tile_store = options.transient ? StoreAction::DontCare : StoreAction::Store;
+  const StoreAction on_tile_store = options.store_gbuffer ? StoreAction::Store : StoreAction::DontCare;
   std::vector<AttachmentDesc> a;
   a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear,
                          options.tonemap ? StoreAction::DontCare : StoreAction::Store, kBackground));

@@ -1,0 +1,57 @@
+// `ontile study deferred`: the deferred-shading bandwidth study (src/studies/deferred_study.h),
+// printed as Markdown and optionally written to a file.
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.h"
+#include "scene/gltf_loader.h"
+#include "studies/deferred_study.h"
+#include "util/atomic_file.h"
+#include "util/error.h"
+
+namespace ontile::cli {
+namespace {
+
+struct StudyOptions {
+  std::string scene, size = "2220x1080", markdown;
+  StudySettings settings;
+};
+
+void run_deferred_study(const StudyOptions& o) {
+  StudySettings s = o.settings;
+  parse_size(o.size, s.width_px, s.height_px);
+  const Scene scene = load_gltf(o.scene);
+  const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
+  const std::string md = deferred_study_markdown(rows, s, std::filesystem::path(o.scene).filename().string());
+  std::fputs(md.c_str(), stdout);
+  if (!o.markdown.empty()) {
+    write_file_atomically(o.markdown, [&](const std::filesystem::path& tmp) {
+      std::FILE* f = std::fopen(tmp.c_str(), "wb");
+      if (!f) throw Error(o.markdown + ": cannot write");
+      const bool ok = std::fwrite(md.data(), 1, md.size(), f) == md.size();
+      if (std::fclose(f) != 0 || !ok) throw Error(o.markdown + ": write failed");
+    });
+  }
+}
+
+}  // namespace
+
+void add_study_command(CLI::App& app) {
+  CLI::App* study = app.add_subcommand("study", "Reproducible bandwidth studies of pipeline designs");
+  study->require_subcommand(1);
+  auto o = std::make_shared<StudyOptions>();
+  CLI::App* cmd = study->add_subcommand(
+      "deferred", "Classic vs subpass deferred, transient attachments, G-buffer size, MSAA resolve (docs/deferred.md)");
+  cmd->add_option("--scene", o->scene, "glTF scene (the docs use the generated atrium)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 2220x1080, the sample's device)");
+  cmd->add_option("--tile", o->settings.tile_size_px, "Tile size in pixels (default 16)")->check(CLI::IsMember({8, 16, 32}));
+  cmd->add_option("--budget", o->settings.color_budget_bits_per_px, "Colour budget in bits per pixel (default 128)")
+      ->check(CLI::Range(32, 1024));
+  cmd->add_option("--lights", o->settings.lights, "Generated point lights (default 48, as the sample)")->check(CLI::Range(0, 65536));
+  cmd->add_option("--frames", o->settings.frames, "Frames per variant; time is their median (default 1)")->check(CLI::Range(1, 100));
+  cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--markdown", o->markdown, "Also write the tables to this file");
+  cmd->callback([o] { run_deferred_study(*o); });
+}
+
+}  // namespace ontile::cli

@@ -1,0 +1,165 @@
+// The deferred-shading bandwidth study (see deferred_study.h).
+#include "studies/deferred_study.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "pipelines/render_frame.h"
+#include "util/error.h"
+
+namespace ontile {
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+// Published Mali-G76 measurements, Khronos Vulkan-Samples (render_subpasses tutorial; rates in
+// MiB/s at 2220x1080, each at its own frame rate), as summed up in ../shared/REFERENCES.md.
+struct Published {
+  const char* label;
+  double read_mib_s, write_mib_s;
+};
+constexpr Published kMali[] = {
+    {"two render passes", 949.4, 641.1},
+    {"subpasses, transient", 389.0, 127.4},
+    {"subpasses, transient off", 403.6, 138.5},
+    {"subpasses, G-buffer > 128 bit", 310.8, 252.9},
+};
+
+std::string mib(uint64_t bytes) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.2f", bytes / kMiB);
+  return s;
+}
+
+std::string fixed(double v, int decimals) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.*f", decimals, v);
+  return s;
+}
+
+uint64_t category(const StudyRow& r, const char* name) {
+  const auto it = r.bytes_by_category.find(name);
+  return it == r.bytes_by_category.end() ? 0 : it->second;
+}
+
+const StudyRow* find_row(const std::vector<StudyRow>& rows, const std::string& label) {
+  for (const StudyRow& r : rows) {
+    if (r.variant.label == label) return &r;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<StudyVariant> deferred_study_variants(int lights) {
+  const std::string n = std::to_string(lights);
+  return {
+      {"two render passes", "deferred-classic", {{"gbuffer", "vulkan-samples"}, {"lights", n}}},
+      {"subpasses, transient", "deferred-subpass", {{"gbuffer", "vulkan-samples"}, {"lights", n}}},
+      {"subpasses, transient off", "deferred-subpass", {{"gbuffer", "vulkan-samples"}, {"lights", n}, {"transient", "off"}}},
+      {"subpasses, G-buffer stored", "deferred-subpass",
+       {{"gbuffer", "vulkan-samples"}, {"lights", n}, {"transient", "off"}, {"gbuffer_store", "store"}}},
+      {"subpasses, G-buffer > 128 bit", "deferred-subpass", {{"gbuffer", "vulkan-samples-large"}, {"lights", n}}},
+      {"forward", "forward", {{"lights", n}}},
+      {"forward 4x MSAA, on-tile resolve", "forward", {{"lights", n}, {"msaa", "4"}}},
+      {"forward 4x MSAA, separate resolve", "forward", {{"lights", n}, {"msaa", "4"}, {"resolve", "separate"}}},
+  };
+}
+
+std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, const std::vector<StudyVariant>& variants) {
+  if (s.frames < 1) throw Error("study: frames must be at least 1");
+  std::vector<StudyRow> rows;
+  for (const StudyVariant& v : variants) {
+    RenderSettings settings;
+    settings.pipeline = v.pipeline;
+    settings.width_px = s.width_px;
+    settings.height_px = s.height_px;
+    settings.context.threads = s.threads;
+    settings.context.tiler.tile_size_px = s.tile_size_px;
+    settings.context.tiler.color_budget_bits_per_px = s.color_budget_bits_per_px;
+    for (const auto& [key, value] : v.options) settings.options.set(key, value);
+    StudyRow row;
+    row.variant = v;
+    std::vector<double> times;
+    for (int f = 0; f < s.frames; ++f) {
+      const RenderedFrame frame = render_frame(scene, settings);
+      const FrameReport& r = frame.outputs.report;
+      times.push_back(r.total_ms);
+      if (f > 0) continue;
+      row.bytes_read = r.bytes_read();
+      row.bytes_written = r.bytes_written();
+      row.bytes_by_category = r.bytes_by_category();
+      row.passes = static_cast<int>(r.passes.size());
+      for (const PassReport& p : r.passes) row.tiles += p.tiles_total;
+      if (!r.passes.empty()) {
+        row.tile_width_px = r.passes[0].tile_width_px;
+        row.tile_height_px = r.passes[0].tile_height_px;
+      }
+    }
+    std::sort(times.begin(), times.end());
+    row.median_frame_ms = times[times.size() / 2];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string deferred_study_markdown(const std::vector<StudyRow>& rows, const StudySettings& s,
+                                    const std::string& scene_name) {
+  std::string md;
+  md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", " +
+        std::to_string(s.tile_size_px) + "x" + std::to_string(s.tile_size_px) + " tiles, " +
+        std::to_string(s.color_budget_bits_per_px) + "-bit colour budget, " + std::to_string(s.lights) +
+        " point lights; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+  md += "| variant | passes | tile | tiles | read | written | attachment load | attachment store | resolve | texture | "
+        "vertex+index | param. write | param. read | frame ms |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const StudyRow& r : rows) {
+    md += "| " + r.variant.label + " | " + std::to_string(r.passes) + " | " + std::to_string(r.tile_width_px) + "x" +
+          std::to_string(r.tile_height_px) + " | " + std::to_string(r.tiles) + " | " + mib(r.bytes_read) + " | " +
+          mib(r.bytes_written) + " | " + mib(category(r, "attachment_load")) + " | " +
+          mib(category(r, "attachment_store")) + " | " + mib(category(r, "resolve")) + " | " +
+          mib(category(r, "texture")) + " | " + mib(category(r, "vertex_index")) + " | " +
+          mib(category(r, "parameter_buffer_write")) + " | " + mib(category(r, "parameter_buffer_read")) + " | " +
+          fixed(r.median_frame_ms, 0) + " |\n";
+  }
+  // Ratios against the subpass variant: the published rates were measured at different frame
+  // rates, so only ratios compare.
+  const StudyRow* base = find_row(rows, "subpasses, transient");
+  const Published& mali_base = kMali[1];
+  if (base) {
+    md += "\nAgainst the published Mali-G76 figures (ratios to \"subpasses, transient\"; Mali in MiB/s, ours in "
+          "MiB/frame):\n\n";
+    md += "| variant | Mali read | Mali write | Mali read ratio | Mali write ratio | Mali total ratio | ours read | "
+          "ours written | ours read ratio | ours write ratio | ours total ratio |\n";
+    md += "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Published& m : kMali) {
+      const StudyRow* r = find_row(rows, m.label);
+      if (!r) continue;
+      const double ours_total = double(r->bytes_read + r->bytes_written) / double(base->bytes_read + base->bytes_written);
+      const double mali_total = (m.read_mib_s + m.write_mib_s) / (mali_base.read_mib_s + mali_base.write_mib_s);
+      md += "| " + std::string(m.label) + " | " + fixed(m.read_mib_s, 1) + " | " + fixed(m.write_mib_s, 1) + " | " +
+            fixed(m.read_mib_s / mali_base.read_mib_s, 2) + " | " + fixed(m.write_mib_s / mali_base.write_mib_s, 2) +
+            " | " + fixed(mali_total, 2) + " | " + mib(r->bytes_read) + " | " + mib(r->bytes_written) + " | " +
+            fixed(double(r->bytes_read) / base->bytes_read, 2) + " | " +
+            fixed(double(r->bytes_written) / base->bytes_written, 2) + " | " + fixed(ours_total, 2) + " |\n";
+    }
+  }
+  const StudyRow* forward = find_row(rows, "forward");
+  const StudyRow* on_tile = find_row(rows, "forward 4x MSAA, on-tile resolve");
+  const StudyRow* separate = find_row(rows, "forward 4x MSAA, separate resolve");
+  if (forward && on_tile && separate) {
+    const double total = double(forward->bytes_read + forward->bytes_written);
+    const double on_tile_extra = double(on_tile->bytes_read + on_tile->bytes_written) - total;
+    const double separate_extra = double(separate->bytes_read + separate->bytes_written) - total;
+    md += "\n4x MSAA against forward without MSAA (published: about +3% for the on-tile resolve, several GB/s for a "
+          "separate resolve at 1080p60):\n\n";
+    md += "| resolve | extra MiB/frame | extra % | extra GiB/s at 60 fps |\n|---|---|---|---|\n";
+    md += "| on tile | " + fixed(on_tile_extra / kMiB, 2) + " | " + fixed(100.0 * on_tile_extra / total, 1) + " | " +
+          fixed(on_tile_extra * 60.0 / (kMiB * 1024.0), 2) + " |\n";
+    md += "| separate pass | " + fixed(separate_extra / kMiB, 2) + " | " + fixed(100.0 * separate_extra / total, 1) +
+          " | " + fixed(separate_extra * 60.0 / (kMiB * 1024.0), 2) + " |\n";
+  }
+  return md;
+}
+
+}  // namespace ontile

@@ -1,0 +1,55 @@
+// The deferred bandwidth study: every variant's attachment traffic is the analytic formula of
+// its design (whole tiles are loaded and stored whatever the scene covers), and the Markdown
+// carries both our figures and the published Mali-G76 ones.
+#include <gtest/gtest.h>
+
+#include "scene/gltf_loader.h"
+#include "studies/deferred_study.h"
+
+namespace ontile {
+namespace {
+
+TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
+  const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
+  StudySettings s;
+  s.width_px = 160;
+  s.height_px = 96;
+  s.threads = 2;
+  s.lights = 4;
+  const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
+  ASSERT_EQ(rows.size(), 8u);
+  const uint64_t px = uint64_t(s.width_px) * s.height_px;
+  auto store = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_store"); };
+  auto load = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_load"); };
+  auto resolve = [](const StudyRow& r) { return r.bytes_by_category.at("resolve"); };
+  // Two render passes: albedo, normal, depth and light stored (4 B/px each).
+  EXPECT_EQ(store(rows[0]), 16 * px);
+  EXPECT_EQ(rows[0].passes, 2);
+  EXPECT_EQ(rows[0].tiles, 2 * rows[1].tiles);  // each pass walks every tile
+  // Subpasses: only the light target.
+  EXPECT_EQ(store(rows[1]), 4 * px);
+  // Transient attachments off with store op DONT_CARE: memory behind them, nothing written.
+  EXPECT_EQ(store(rows[2]), 4 * px);
+  // G-buffer and depth stored: written back as well.
+  EXPECT_EQ(store(rows[3]), 16 * px);
+  // G-buffer over budget: tiles halve, only the light is stored.
+  EXPECT_EQ(store(rows[4]), 4 * px);
+  EXPECT_EQ(rows[4].tile_width_px * rows[4].tile_height_px, 128);
+  // Forward, then 4x MSAA resolved on tile (only the resolve write), then separately (the 4
+  // samples stored and loaded back, 16 B/px each way, plus the resolve write).
+  EXPECT_EQ(store(rows[5]), 4 * px);
+  EXPECT_EQ(store(rows[6]) + load(rows[6]), 0u);
+  EXPECT_EQ(resolve(rows[6]), 4 * px);
+  EXPECT_EQ(store(rows[7]), 16 * px);
+  EXPECT_EQ(load(rows[7]), 16 * px);
+  EXPECT_EQ(resolve(rows[7]), 4 * px);
+  for (const StudyRow& r : rows) EXPECT_GT(r.bytes_by_category.at("parameter_buffer_read"), 0u) << r.variant.label;
+
+  const std::string md = deferred_study_markdown(rows, s, "demo.glb");
+  for (const char* expected : {"| two render passes | 2 |", "949.4", "389.0", "| on tile |", "| separate pass |"}) {
+    EXPECT_NE(md.find(expected), std::string::npos) << expected;
+  }
+}
+
+}  // namespace
+}  // namespace ontile
