@@ -1,6 +1,7 @@
 // The Deferred Lit shader, its materials and the full-screen steps (see deferred_shaders.h).
 #include "pipelines/deferred/deferred_shaders.h"
 
+#include "pipelines/gltf_surface_state.h"
 #include "shaders_cpp/deferred/deferred_lighting_shader.h"
 #include "shaders_cpp/deferred/gbuffer_shader.h"
 #include "shaders_cpp/full_screen.h"
@@ -147,19 +148,7 @@ std::unique_ptr<RenderMaterial> DeferredShaderLibrary::make_material(const Mater
   bind(gltf.base_color_texture, "_BaseMap", "_BASEMAP");
   bind(gltf.metallic_roughness_texture, "_MetallicRoughnessMap", "_METALLICROUGHNESSMAP");
   if (gltf.emissive_factor != glm::vec3(0.0f)) bind(gltf.emissive_texture, "_EmissionMap", "_EMISSION");
-  if (gltf.double_sided) m->cull = CullMode::None;
-  switch (gltf.alpha_mode) {
-    case AlphaMode::Opaque: break;
-    case AlphaMode::Mask:
-      m->keywords.insert("_ALPHATEST_ON");
-      m->render_queue = render_queue::kAlphaTest;
-      break;
-    case AlphaMode::Blend:
-      m->render_queue = render_queue::kTransparent;
-      m->blend = BlendMode::Alpha;
-      m->depth_write = false;
-      break;
-  }
+  apply_gltf_surface_state(*m, gltf);
   return m;
 }
 

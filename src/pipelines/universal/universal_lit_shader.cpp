@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "pipelines/gltf_surface_state.h"
 #include "pipelines/universal/universal_lit_functors.h"
 
 namespace ontile {
@@ -151,19 +152,7 @@ std::unique_ptr<RenderMaterial> make_universal_lit_material(const Shader& shader
       m->properties.textures["_EmissionMap"] = {gltf.emissive_texture.texture, {}, gltf.emissive_texture.sampler};
     }
   }
-  if (gltf.double_sided) m->cull = CullMode::None;
-  switch (gltf.alpha_mode) {
-    case AlphaMode::Opaque: break;
-    case AlphaMode::Mask:
-      m->keywords.insert("_ALPHATEST_ON");
-      m->render_queue = render_queue::kAlphaTest;
-      break;
-    case AlphaMode::Blend:
-      m->render_queue = render_queue::kTransparent;
-      m->blend = BlendMode::Alpha;
-      m->depth_write = false;
-      break;
-  }
+  apply_gltf_surface_state(*m, gltf);
   return m;
 }
 
