@@ -20,6 +20,7 @@ AccuracyRun measure_accuracy(const Scene& scene, const RenderSettings& settings)
   AccuracyInputs in;
   in.reference = &run.reference;
   in.geometry = ref.geometry.get();
+  in.renderers = &ref.renderers.renderers;
   in.camera = ref.camera;
   in.raster_color = frame.outputs.color;
   in.raster_depth = aovs.surfaces[0];

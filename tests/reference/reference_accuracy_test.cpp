@@ -1,6 +1,7 @@
 // The ray-traced reference against the rasterizer: exact coverage and colour within one 8-bit
 // step on a quad without fill-rule ties, ties only on a perspective triangle and on the demo
-// scene, the primitive-id/normal AOVs, sample counts, determinism and the edge distance.
+// scene, the primitive-id/normal AOVs, sample counts, determinism, the edge distance and the
+// depth-tie classification.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -28,7 +29,8 @@ TEST(ReferenceAccuracy, QuadWithoutTiesMatchesExactlyAndWithinOneStep) {
   const AccuracyMetrics& m = run.metrics;
   EXPECT_EQ(m.coverage_matches, uint64_t(64 * 64));
   EXPECT_EQ(m.coverage_agreement, 1.0);
-  EXPECT_EQ(m.mismatch_edge_ties + m.mismatch_real, 0u);
+  EXPECT_EQ(m.mismatch_edge_ties + m.mismatch_depth_ties + m.mismatch_real, 0u);
+  EXPECT_EQ(m.pixels_near_edges, 0u);
   // Pixel centres (x + 0.5) inside [8.25, 40.25) x [8.25, 24.25): 32 x 16 pixels.
   EXPECT_EQ(m.depth_pixels, uint64_t(32 * 16));
   EXPECT_LE(m.color_max_abs_error, 1);
@@ -117,6 +119,72 @@ TEST(AccuracyMetrics, EdgeDistanceIsThePixelDistanceToTheNearestEdge) {
   EXPECT_NEAR(distance_to_triangle_edges_px(*ref.geometry, ref.camera, 64, 64, 0, 30.5, 19.5),
               std::abs(30.5 / 2 + 4.125 - 19.5) / std::sqrt(1.25), 1e-9);
   EXPECT_TRUE(std::isinf(distance_to_triangle_edges_px(*ref.geometry, ref.camera, 64, 64, 2, 1.0, 1.0)));
+}
+
+TEST(AccuracyMetrics, TriangleAtPixelGivesExactDepthAndItsErrorBound) {
+  const Scene scene = test::textured_quad_scene();
+  const LambertReferenceScene ref = make_lambert_reference_scene(scene, scene.cameras[0], 64, 64);
+  const std::vector<Renderer>& renderers = ref.renderers.renderers;
+  const double plane_depth = (-5.0 + 0.1) / (0.1 - 10.0);  // orthographic, as in aov_pass_test
+  const TriangleAtPixel inside = triangle_at_pixel(*ref.geometry, renderers, ref.camera, 64, 64, 0, 9.5, 20.5);
+  ASSERT_TRUE(inside.covered);
+  EXPECT_NEAR(inside.depth, plane_depth, 1e-9);  // the camera's near plane is the float 0.1f
+  // The plane faces the camera: no snapping term, only the float transform and D32F terms,
+  // 6u (|z row| |p| + |w row| |p|) / w + 2^-24 with |p| = (|x|, |y|, 0, 1) at the far corner.
+  EXPECT_GE(inside.depth_error_bound, 1.0 / 16777216.0);
+  EXPECT_LT(inside.depth_error_bound, 1e-6);
+  // (38.5, 9.5) is triangle 1's, outside triangle 0; an unknown id covers nothing.
+  EXPECT_FALSE(triangle_at_pixel(*ref.geometry, renderers, ref.camera, 64, 64, 0, 38.5, 9.5).covered);
+  EXPECT_TRUE(triangle_at_pixel(*ref.geometry, renderers, ref.camera, 64, 64, 1, 38.5, 9.5).covered);
+  EXPECT_FALSE(triangle_at_pixel(*ref.geometry, renderers, ref.camera, 64, 64, 2, 9.5, 20.5).covered);
+}
+
+// Two overlapping quads dz apart in world z (orthographic camera): at a pixel far from every
+// edge the reference is made to name the surface the rasterizer does not show.
+AccuracyMetrics swapped_surface_metrics(float dz) {
+  Scene scene = test::textured_quad_scene();
+  MeshPrimitive& prim = scene.meshes[0].primitives[0];
+  for (uint32_t v = 0; v < 4; ++v) prim.positions.push_back(prim.positions[v] + glm::vec3(0.0f, 0.0f, dz));
+  prim.normals.insert(prim.normals.end(), prim.normals.begin(), prim.normals.end());
+  prim.uv0.insert(prim.uv0.end(), prim.uv0.begin(), prim.uv0.end());
+  prim.indices.insert(prim.indices.end(), {4, 7, 6, 4, 6, 5});
+  RenderSettings settings = settings_for(64, 64);
+  const RenderedFrame frame = render_frame(scene, settings);
+  const AovFrame aovs = render_aov_frame(scene, settings, {AovKind::Depth, AovKind::PrimitiveId});
+  const LambertReferenceScene ref = make_lambert_reference_scene(scene, frame.camera, 64, 64);
+  ReferenceImage image = render_reference(ref, 64, 64, 1);
+  // Pixel (12, 20): triangle 0 or 2 (its copy), 0.25 px or more from every edge.
+  const size_t i = 20 * 64 + 12;
+  const float raster_id = aovs.surfaces[1]->read(12, 20).x;
+  EXPECT_TRUE(raster_id == 0.0f || raster_id == 2.0f) << raster_id;
+  image.primitive_id[i] = raster_id == 0.0f ? 2.0f : 0.0f;
+  AccuracyInputs in;
+  in.reference = &image;
+  in.geometry = ref.geometry.get();
+  in.renderers = &ref.renderers.renderers;
+  in.camera = ref.camera;
+  in.raster_color = frame.outputs.color;
+  in.raster_depth = aovs.surfaces[0];
+  in.raster_primitive_id = aovs.surfaces[1];
+  return compare_with_reference(in);
+}
+
+TEST(AccuracyMetrics, CloseSurfacesAreDepthTiesAndDistantOnesReal) {
+  // Depth gap dz / (f - n) = 1e-6 / 9.9, below the two bounds (about 2 * 6e-7); 1e-3 / 9.9 is not.
+  const AccuracyMetrics tie = swapped_surface_metrics(1e-6f);
+  EXPECT_EQ(tie.mismatch_depth_ties, 1u);
+  EXPECT_EQ(tie.mismatch_real, 0u);
+  EXPECT_NEAR(tie.max_depth_tie_gap, 1e-6 / 9.9, 1e-9);
+  EXPECT_GT(tie.max_depth_tie_bound, tie.max_depth_tie_gap);
+  const AccuracyMetrics real = swapped_surface_metrics(1e-3f);
+  EXPECT_EQ(real.mismatch_depth_ties, 0u);
+  EXPECT_EQ(real.mismatch_real, 1u);
+  EXPECT_EQ(real.mismatch_edge_ties, 0u);
+}
+
+TEST(AccuracyMetrics, MissingRenderersAreAnError) {
+  AccuracyInputs in;
+  EXPECT_THROW(compare_with_reference(in), Error);
 }
 
 TEST(AccuracyRun, RejectsPipelinesWithoutAReference) {

@@ -73,6 +73,8 @@ TEST(ReferenceCli, AccuracyPrintsAndWritesMetrics) {
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\"coverage_agreement\""), std::string::npos);
   EXPECT_NE(text.find("\"mismatch_edge_ties\""), std::string::npos);
+  EXPECT_NE(text.find("\"mismatch_depth_ties\""), std::string::npos);
+  EXPECT_NE(r.output.find("depth ties"), std::string::npos) << r.output;
 }
 
 TEST(ReferenceCli, BadArgumentsGiveOneErrorLineAndWriteNothing) {
