@@ -18,7 +18,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights;
-  int camera = -1, threads = 0, tile = 16, budget = 128;
+  int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128;
   std::vector<std::string> pipeline_options;
 };
@@ -85,6 +85,7 @@ void run_render(const RenderOptions& o) {
   settings.context.threads = o.threads;
   settings.context.tiler.tile_size_px = o.tile;
   settings.context.tiler.color_budget_bits_per_px = o.budget;
+  settings.context.tiler.subpixel_bits = o.subpixel_bits;
   settings.context.tiler.architecture = o.arch == "imr" ? Architecture::Imr : Architecture::Tbdr;
   settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
@@ -162,6 +163,8 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::IsMember({4, 8, 16, 32, 64}));
   cmd->add_option("--budget", o->budget, "Tile-memory colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 4096));
+  cmd->add_option("--subpixel-bits", o->subpixel_bits, "Vertex snapping precision: 8 (D3D11, default) or 4 (Vulkan minimum)")
+      ->check(CLI::IsMember({4, 8}));
   cmd->add_option("--report", o->report, "Write the JSON traffic report here");
   cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   ontile::cli::add_reference_command(app);
   ontile::cli::add_accuracy_command(app);
   ontile::cli::add_study_command(app);
+  ontile::cli::add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -16,6 +16,9 @@ struct CameraMatrices {
 
 // aspect_ratio = width / height of the target; the camera's own aspect ratio, when set, is
 // ignored so images are never stretched (the vertical field of view is kept).
-CameraMatrices camera_matrices(const Camera& camera, double aspect_ratio);
+// reversed_z maps the near plane to depth 1 and the far plane (or infinity) to 0, which spends
+// the float depth buffer's dense values near 0 on far surfaces (Reed, "Depth Precision
+// Visualized", 2015); pipelines using it clear depth to 0 and test with GreaterEqual.
+CameraMatrices camera_matrices(const Camera& camera, double aspect_ratio, bool reversed_z = false);
 
 }  // namespace ontile

@@ -1,10 +1,52 @@
 // The Lit shader and its materials (see lit_shader.h).
 #include "pipelines/lit_shader.h"
 
+#include "pipelines/gltf_surface_state.h"
+
 namespace ontile {
 namespace {
 
-DrawFunctors lit_forward_functors(const DrawContext& ctx) {
+// Runs the Lambert functor (output 0), then writes the extra outputs of LitShaderOptions for
+// every lane it kept. The normal is computed exactly as LambertShader computes the one it lights.
+class LitExtraOutputs final : public FragmentShader {
+ public:
+  LitExtraOutputs(std::unique_ptr<FragmentShader> lit, std::optional<NormalStorage> normal_output,
+                  bool primitive_id_output)
+      : lit_(std::move(lit)), normal_output_(normal_output), primitive_id_output_(primitive_id_output) {}
+  bool may_discard() const override { return lit_->may_discard(); }
+
+  void shade(const QuadFragment& quad, QuadOutput& out) const override {
+    lit_->shade(quad, out);
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!quad.lane_active(lane) || ((out.discard_mask >> lane) & 1u)) continue;
+      int k = 1;
+      if (normal_output_) {
+        glm::vec3 n = quad.var3(MeshVertexShader::kNormal, lane);
+        const float len = glm::length(n);
+        n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+        if (!quad.front_facing) n = -n;
+        out.color[k++][lane] = encode_normal(*normal_output_, n);
+      }
+      if (primitive_id_output_) {
+        out.color[k][lane] = glm::vec4(static_cast<float>(quad.primitive_id), 0.0f, 0.0f, 1.0f);
+      }
+    }
+  }
+
+ private:
+  std::unique_ptr<FragmentShader> lit_;
+  std::optional<NormalStorage> normal_output_;
+  bool primitive_id_output_;
+};
+
+void apply_filtering(TextureFiltering filtering, SamplerDesc& sampler) {
+  if (filtering == TextureFiltering::Gltf) return;
+  sampler.min_filter = FilterMode::Linear;
+  sampler.mag_filter = FilterMode::Linear;
+  sampler.mipmap_mode = filtering == TextureFiltering::Bilinear ? MipmapMode::Nearest : MipmapMode::Linear;
+}
+
+DrawFunctors lit_forward_functors(const DrawContext& ctx, const LitShaderOptions& options) {
   DrawFunctors f;
   auto vs = std::make_unique<MeshVertexShader>(ctx.require_mesh(), ctx.world, ctx.camera.view_projection);
   f.input_vertex_bytes = vs->input_vertex_bytes();
@@ -20,6 +62,8 @@ DrawFunctors lit_forward_functors(const DrawContext& ctx) {
   // Keywords without their texture fall back to the variant without it.
   const auto base_map = ctx.texture("_BaseMap", &p.base_sampler);
   const auto emission_map = ctx.texture("_EmissionMap", &p.emission_sampler);
+  apply_filtering(options.filtering, p.base_sampler);
+  apply_filtering(options.filtering, p.emission_sampler);
   p.base_map = base_map.get();
   p.emission_map = emission_map.get();
   const RenderMaterial& m = *ctx.material;
@@ -29,6 +73,10 @@ DrawFunctors lit_forward_functors(const DrawContext& ctx) {
       },
       m.has_keyword("_BASEMAP") && p.base_map, m.has_keyword("_ALPHATEST_ON"),
       m.has_keyword("_EMISSION") && p.emission_map);
+  if (options.normal_output || options.primitive_id_output) {
+    f.fragment = std::make_unique<LitExtraOutputs>(std::move(f.fragment), options.normal_output,
+                                                   options.primitive_id_output);
+  }
   return f;
 }
 
@@ -42,10 +90,13 @@ DrawFunctors depth_only_functors(const DrawContext& ctx) {
 
 }  // namespace
 
-std::unique_ptr<Shader> make_lit_shader() {
+std::unique_ptr<Shader> make_lit_shader(const LitShaderOptions& options) {
   auto shader = std::make_unique<Shader>("Lit");
-  shader->add_pass({"ForwardLit", lit::kForwardLit, PassState{}, lit_forward_functors});
-  shader->add_pass({"DepthOnly", lit::kDepthOnly, PassState{}, depth_only_functors});
+  PassState state;
+  state.depth_compare = options.depth_compare;
+  shader->add_pass({"ForwardLit", lit::kForwardLit, state,
+                    [options](const DrawContext& ctx) { return lit_forward_functors(ctx, options); }});
+  shader->add_pass({"DepthOnly", lit::kDepthOnly, state, depth_only_functors});
   return shader;
 }
 
@@ -62,19 +113,7 @@ std::unique_ptr<RenderMaterial> make_lit_material(const Shader& lit_shader, cons
     m->properties.textures["_EmissionMap"] = {gltf.emissive_texture.texture, {}, gltf.emissive_texture.sampler};
     m->keywords.insert("_EMISSION");
   }
-  if (gltf.double_sided) m->cull = CullMode::None;
-  switch (gltf.alpha_mode) {
-    case AlphaMode::Opaque: break;
-    case AlphaMode::Mask:
-      m->keywords.insert("_ALPHATEST_ON");
-      m->render_queue = render_queue::kAlphaTest;
-      break;
-    case AlphaMode::Blend:
-      m->render_queue = render_queue::kTransparent;
-      m->blend = BlendMode::Alpha;
-      m->depth_write = false;
-      break;
-  }
+  apply_gltf_surface_state(*m, gltf);
   return m;
 }
 

@@ -3,9 +3,11 @@
 // mapping from glTF materials to its materials; and the lighting globals it reads.
 #pragma once
 #include <memory>
+#include <optional>
 
 #include "context/render_context.h"
 #include "shaders_cpp/lambert_shader.h"
+#include "shaders_cpp/normal_encoding.h"
 
 namespace ontile {
 
@@ -14,7 +16,23 @@ constexpr const char* kForwardLit = "ForwardLit";
 constexpr const char* kDepthOnly = "DepthOnly";
 }  // namespace lit
 
-std::unique_ptr<Shader> make_lit_shader();
+// Texture filtering of the Lit materials' maps: the glTF samplers as authored, or every map
+// with linear min/mag filtering and the mip mode forced: bilinear = linear within the nearest
+// mip level (Vulkan VK_SAMPLER_MIPMAP_MODE_NEAREST), trilinear = blend of the two nearest levels.
+enum class TextureFiltering { Gltf, Bilinear, Trilinear };
+
+struct LitShaderOptions {
+  // Compare op of both passes: LessEqual for standard depth, GreaterEqual for reversed Z.
+  CompareOp depth_compare = CompareOp::LessEqual;
+  TextureFiltering filtering = TextureFiltering::Gltf;
+  // Extra ForwardLit outputs after the colour (output 0), in this order: the shading normal
+  // (unit, flipped on back faces, as the Lambert functor lights with) encoded for the storage,
+  // then the primitive id as float in R (exact below 2^24).
+  std::optional<NormalStorage> normal_output;
+  bool primitive_id_output = false;
+};
+
+std::unique_ptr<Shader> make_lit_shader(const LitShaderOptions& options = {});
 // Properties _BaseColor, _BaseMap, _EmissionColor, _EmissionMap, _Cutoff; keywords from what
 // the material uses; queue Geometry / AlphaTest / Transparent; cull Off when double-sided.
 std::unique_ptr<RenderMaterial> make_lit_material(const Shader& lit_shader, const Material& gltf);

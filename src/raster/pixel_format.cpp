@@ -31,6 +31,7 @@ constexpr FormatInfo kFormats[] = {
     {PixelFormat::D32_FLOAT, "d32f", 4, 1, true},
     {PixelFormat::D24S8, "d24s8", 4, 2, true},
     {PixelFormat::D16_UNORM, "d16", 2, 1, true},
+    {PixelFormat::RG16_UNORM, "rg16", 4, 2, false},
 };
 
 constexpr bool formats_indexed_by_enum() {
@@ -268,6 +269,10 @@ void encode_pixel(PixelFormat format, glm::vec4 v, uint8_t* dst) {
     case PixelFormat::D16_UNORM:
       store_u16(dst, float_to_unorm(v.x, 16));
       return;
+    case PixelFormat::RG16_UNORM:
+      store_u16(dst, float_to_unorm(v.x, 16));
+      store_u16(dst + 2, float_to_unorm(v.y, 16));
+      return;
   }
 }
 
@@ -310,6 +315,8 @@ glm::vec4 decode_pixel(PixelFormat format, const uint8_t* src) {
     }
     case PixelFormat::D16_UNORM:
       return {unorm_to_float(load_u16(src), 16), 0.0f, 0.0f, 1.0f};
+    case PixelFormat::RG16_UNORM:
+      return {unorm_to_float(load_u16(src), 16), unorm_to_float(load_u16(src + 2), 16), 0.0f, 1.0f};
   }
   return {0.0f, 0.0f, 0.0f, 1.0f};
 }
@@ -344,6 +351,8 @@ glm::vec4 quantize_pixel(PixelFormat format, glm::vec4 v) {
       return {quantize_unorm(v.x, 24), static_cast<float>(encode_stencil(v.y)), 0.0f, 1.0f};
     case PixelFormat::D16_UNORM:
       return {quantize_unorm(v.x, 16), 0.0f, 0.0f, 1.0f};
+    case PixelFormat::RG16_UNORM:
+      return {quantize_unorm(v.x, 16), quantize_unorm(v.y, 16), 0.0f, 1.0f};
   }
   return {0.0f, 0.0f, 0.0f, 1.0f};
 }

@@ -21,6 +21,7 @@ enum class PixelFormat {
   D32_FLOAT,
   D24S8,  // Vulkan D24_UNORM_S8_UINT: depth in bits 0-23, stencil in bits 24-31
   D16_UNORM,
+  RG16_UNORM,  // Vulkan R16G16_UNORM (e.g. octahedral-encoded normals)
 };
 
 int bytes_per_pixel(PixelFormat format);

@@ -5,9 +5,13 @@
 
 namespace ontile {
 
-// 8 subpixel bits (D3D11 functional spec 3.2.4.1: 16.8 fixed point vertex positions).
+// 8 subpixel bits (D3D11 functional spec 3.2.4.1: 16.8 fixed point vertex positions). Edge
+// functions and sample positions always work in these 1/256 px units; a coarser snapping
+// precision (TilerConfig::subpixel_bits) only moves vertices onto a coarser grid of them.
 constexpr int kSubpixelBits = 8;
 constexpr int64_t kSubpixelScale = int64_t{1} << kSubpixelBits;
+// Vulkan requires subPixelPrecisionBits >= 4 (Vulkan 1.3, table "Required Limits").
+constexpr int kMinSubpixelBits = 4;
 // Snapped positions must lie in [-kGuardBandPx, kGuardBandPx]: then |x| < 2^23 subpixels, edge
 // function products stay below 2^49 and fit int64 comfortably. Triangles reaching beyond are
 // clipped against these guard-band planes; everything inside is rasterized without clipping.

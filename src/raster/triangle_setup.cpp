@@ -28,7 +28,10 @@ EdgeFunction make_edge(int32_t xj, int32_t yj, int32_t xk, int32_t yk) {
 }  // namespace
 
 SetupResult setup_triangle(const glm::vec4 clip[3], int width_px, int height_px, CullMode cull,
-                           FrontFace front_face, TriangleSetup& t) {
+                           FrontFace front_face, TriangleSetup& t, int subpixel_bits) {
+  // Snapping grid: 2^subpixel_bits steps per pixel, each `grid_step` units of 1/256 px.
+  const double snap_scale = static_cast<double>(int64_t{1} << subpixel_bits);
+  const int64_t grid_step = kSubpixelScale >> subpixel_bits;
   for (int i = 0; i < 3; ++i) {
     // Viewport transform in double so snapping sees the exact rounding of the divide.
     const double inv_w = 1.0 / static_cast<double>(clip[i].w);
@@ -36,9 +39,10 @@ SetupResult setup_triangle(const glm::vec4 clip[3], int width_px, int height_px,
     const double ndc_y = clip[i].y * inv_w;
     const double sx = (ndc_x * 0.5 + 0.5) * width_px;
     const double sy = (0.5 - ndc_y * 0.5) * height_px;  // +Y up in NDC, rows go down
-    // Round to nearest subpixel (D3D11 3.2.4.1 snapping).
-    t.x_fp[i] = static_cast<int32_t>(std::llround(sx * kSubpixelScale));
-    t.y_fp[i] = static_cast<int32_t>(std::llround(sy * kSubpixelScale));
+    // Round to the nearest point of the snapping grid (D3D11 3.2.4.1 snapping); scaling by a
+    // power of two is exact, so at 8 bits this is llround(sx * 256) as before.
+    t.x_fp[i] = static_cast<int32_t>(std::llround(sx * snap_scale) * grid_step);
+    t.y_fp[i] = static_cast<int32_t>(std::llround(sy * snap_scale) * grid_step);
     t.depth[i] = static_cast<float>(clip[i].z * inv_w);
     t.inv_w[i] = static_cast<float>(inv_w);
     t.vertex_order[i] = static_cast<uint8_t>(i);

@@ -20,7 +20,7 @@ struct EdgeFunction {
 };
 
 struct TriangleSetup {
-  int32_t x_fp[3] = {}, y_fp[3] = {};  // snapped positions, 16.8 fixed point, y down
+  int32_t x_fp[3] = {}, y_fp[3] = {};  // snapped positions, 1/256 px units, y down
   EdgeFunction edge[3];
   int64_t area2 = 0;                   // twice the area in subpixel^2 units, > 0
   double inv_area2 = 0.0;
@@ -35,9 +35,12 @@ struct TriangleSetup {
 
 enum class SetupResult { Ok, Culled, ZeroArea, OutsideViewport };
 
-// clip_positions must have w > 0 and lie inside the guard band (see clip.h).
+// clip_positions must have w > 0 and lie inside the guard band (see clip.h). Vertices snap to
+// the nearest multiple of 2^-subpixel_bits px (kMinSubpixelBits..kSubpixelBits; D3D11 uses 8,
+// Vulkan allows any precision >= 4); x_fp/y_fp stay in 1/256 px units either way, so coverage,
+// the fill rule and sample positions are evaluated exactly at every precision.
 SetupResult setup_triangle(const glm::vec4 clip_positions[3], int viewport_width_px,
                            int viewport_height_px, CullMode cull, FrontFace front_face,
-                           TriangleSetup& out);
+                           TriangleSetup& out, int subpixel_bits = kSubpixelBits);
 
 }  // namespace ontile

@@ -156,7 +156,7 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
     TriangleSetup setup;
     if (outcome == ClipOutcome::Inside) {
       const SetupResult r = setup_triangle(pos, grid.width_px, grid.height_px, draw.raster.cull,
-                                           draw.raster.front_face, setup);
+                                           draw.raster.front_face, setup, grid.subpixel_bits);
       if (r == SetupResult::Ok) {
         emit_triangle(setup, var, n, primitive_id, grid, chunk);
       } else if (r == SetupResult::Culled) {
@@ -178,7 +178,8 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
       const float* fan_var[3] = {polygon.varyings[0], polygon.varyings[i],
                                  polygon.varyings[i + 1]};
       const SetupResult r = setup_triangle(fan_pos, grid.width_px, grid.height_px,
-                                           draw.raster.cull, draw.raster.front_face, setup);
+                                           draw.raster.cull, draw.raster.front_face, setup,
+                                           grid.subpixel_bits);
       if (r == SetupResult::Ok) {
         emit_triangle(setup, fan_var, n, primitive_id, grid, chunk);
         any_emitted = true;

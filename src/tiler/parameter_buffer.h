@@ -23,6 +23,7 @@ struct BinnedTriangle {
 struct TileGrid {
   int width_px = 0, height_px = 0;
   int tile_width_px = 16, tile_height_px = 16;
+  int subpixel_bits = kSubpixelBits;  // vertex snapping precision (TilerConfig::subpixel_bits)
   int tiles_x() const { return (width_px + tile_width_px - 1) / tile_width_px; }
   int tiles_y() const { return (height_px + tile_height_px - 1) / tile_height_px; }
   int tile_count() const { return tiles_x() * tiles_y(); }

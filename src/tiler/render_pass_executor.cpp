@@ -175,6 +175,10 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     throw Error("tile size " + std::to_string(config.tile_size_px) +
                 " must be a power of two in 2..256");
   }
+  if (config.subpixel_bits != kSubpixelBits && config.subpixel_bits != kMinSubpixelBits) {
+    throw Error("subpixel precision " + std::to_string(config.subpixel_bits) + " bits: must be " +
+                std::to_string(kMinSubpixelBits) + " or " + std::to_string(kSubpixelBits));
+  }
   validate(pass);
   PassReport report;
   report.name = pass.name;
@@ -186,7 +190,8 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   report.tile_size_reduced = report.tile_width_px * report.tile_height_px <
                              config.tile_size_px * config.tile_size_px;
 
-  TileGrid grid{pass.width_px, pass.height_px, report.tile_width_px, report.tile_height_px};
+  TileGrid grid{pass.width_px, pass.height_px, report.tile_width_px, report.tile_height_px,
+                config.subpixel_bits};
   report.tiles_total = static_cast<uint64_t>(grid.tile_count());
 
   const auto bin_start = std::chrono::steady_clock::now();

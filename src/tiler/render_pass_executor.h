@@ -15,6 +15,9 @@ struct TilerConfig {
   Architecture architecture = Architecture::Tbdr;
   int tile_size_px = 16;                 // Mali's 16x16 by default
   int color_budget_bits_per_px = 128;    // tile-buffer colour bits per pixel (Mali-G76: 128)
+  // Vertex snapping precision: 8 (D3D11 3.2.4.1, 16.8 fixed point) or 4 (Vulkan's minimum
+  // subPixelPrecisionBits); anything else makes execute_render_pass throw.
+  int subpixel_bits = kSubpixelBits;
   TextureCacheConfig texture_cache;
   RenderTargetCacheConfig render_target_cache;  // IMR only
 };

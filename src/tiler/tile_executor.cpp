@@ -131,6 +131,15 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
   const bool late_z = draw.fragment_shader && draw.fragment_shader->may_discard();
   const int samples = ctx.pattern.count;
   float* depth_plane = memory.depth_plane();
+  // A fixed-point depth attachment (D16, D24S8) converts the fragment's depth to its format
+  // before the depth test (Vulkan 1.3 "Depth Test", Fixed-Point Data Conversions): tile memory
+  // keeps floats, so the incoming depth is quantised here and the quantised value is tested
+  // and written. D32F keeps the float as it is.
+  const PixelFormat depth_format = has_depth ? ctx.pass.attachments[ctx.pass.depth_index].format
+                                             : PixelFormat::D32_FLOAT;
+  const int depth_unorm_bits = depth_format == PixelFormat::D16_UNORM ? 16
+                               : depth_format == PixelFormat::D24S8   ? 24
+                                                                      : 0;
 
   // Depth at every covered sample, tested against tile memory.
   float sample_depth[kQuadLanes][kMaxSamples];
@@ -145,6 +154,10 @@ void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCovera
       double bary[3];
       screen_barycentrics(t, px + ctx.pattern.x[s], py + ctx.pattern.y[s], bary);
       sample_depth[lane][s] = interpolate_depth(t, bary);
+      if (depth_unorm_bits) {
+        sample_depth[lane][s] = unorm_to_float(float_to_unorm(sample_depth[lane][s], depth_unorm_bits),
+                                               depth_unorm_bits);
+      }
       if (depth_test) {
         const size_t i = memory.index(qx + (lane & 1) - ctx.rect.x0, qy + (lane >> 1) - ctx.rect.y0, s);
         if (!depth_compare_passes(draw.raster.depth_compare, sample_depth[lane][s], depth_plane[i])) {

@@ -61,12 +61,15 @@ struct CountResult {
 
 // Draws the triangles with cull mode None, no depth, additive blending into R32F.
 // With samples > 1 the target is resolved, so counts are the covered fraction of samples.
+// subpixel_bits is the tiler's vertex snapping precision (TilerConfig::subpixel_bits).
 inline CountResult draw_counting(const std::vector<glm::vec4>& positions,
                                  const std::vector<uint32_t>& indices, int width, int height,
-                                 int tile_size_px = 16, int threads = 2, int samples = 1) {
+                                 int tile_size_px = 16, int threads = 2, int samples = 1,
+                                 int subpixel_bits = kSubpixelBits) {
   ContextConfig cfg;
   cfg.threads = threads;
   cfg.tiler.tile_size_px = tile_size_px;
+  cfg.tiler.subpixel_bits = subpixel_bits;
   RenderContext ctx(cfg);
   Surface* target = ctx.create_surface("count", PixelFormat::R32_FLOAT, width, height);
   ClipSpaceVertexShader vs(positions, {}, 0);

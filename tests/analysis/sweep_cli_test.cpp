@@ -1,0 +1,122 @@
+// `ontile sweep` as a user runs it: a CSV with the documented header and one row per setting in
+// order, a PNG plot, and one error line with a non-zero exit (and no output files) for bad
+// arguments.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "analysis/sweep_csv.h"
+#include "io/image_io.h"
+
+namespace ontile {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+CliRun run_cli(const std::string& args) {
+  const std::string cmd = std::string(ONTILE_CLI) + " " + args + " 2>&1";
+  CliRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf;
+  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+fs::path temp_folder() {
+  const fs::path dir = fs::temp_directory_path() / ("ontile_sweep_cli_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, sep)) fields.push_back(field);
+  if (!line.empty() && line.back() == sep) fields.push_back("");
+  return fields;
+}
+
+const std::string kDemo = std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb";
+
+TEST(SweepCli, WritesTheCsvRowsAndThePlot) {
+  const fs::path dir = temp_folder();
+  const fs::path csv = dir / "sweep.csv", png = dir / "sweep.png";
+  const CliRun r = run_cli("sweep --scene " + kDemo + " --size 64x36 --frames 1 --spp 4 --threads 2 --csv " +
+                           csv.string() + " --plot " + png.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
+
+  std::ifstream f(csv);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(f, line);) lines.push_back(line);
+  const std::vector<SweepSetting> settings = sweep_settings();
+  ASSERT_EQ(lines.size(), settings.size() + 1);
+  const std::vector<std::string> columns = sweep_csv_columns();
+  EXPECT_EQ(split(lines[0], ','), columns);
+  auto column = [&](const std::string& name) {
+    return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  int pareto = 0;
+  for (size_t i = 0; i < settings.size(); ++i) {
+    const std::vector<std::string> fields = split(lines[i + 1], ',');
+    ASSERT_EQ(fields.size(), columns.size()) << lines[i + 1];
+    EXPECT_EQ(fields[column("setting")], settings[i].name);
+    EXPECT_EQ(fields[column("width_px")], "64");
+    EXPECT_EQ(fields[column("reference_spp")], "4");
+    const bool msaa = settings[i].options.msaa_samples > 1;
+    EXPECT_EQ(fields[column("id_mismatch_vs_default")].empty(), msaa) << settings[i].name;
+    const bool normals = settings[i].options.normals.has_value();
+    EXPECT_EQ(fields[column("normal_mean_error_deg")].empty(), !normals) << settings[i].name;
+    EXPECT_EQ(fields[column("normal_storage_max_error_deg")].empty(), !normals) << settings[i].name;
+    EXPECT_EQ(fields[column("normal_buffer_bytes")] == "0", !normals) << settings[i].name;
+    pareto += fields[column("pareto_time")] == "1";
+  }
+  // The default's ids are the baseline of that column.
+  EXPECT_EQ(split(lines[1], ',')[column("id_mismatch_vs_default")], "0.000000");
+  EXPECT_GE(pareto, 1);
+
+  int width = 0, height = 0;
+  const std::vector<uint8_t> rgba = read_png_rgba8(png, width, height);
+  EXPECT_EQ(width, 960);
+  EXPECT_EQ(height, 600);
+  EXPECT_EQ(rgba.size(), size_t(960) * 600 * 4);
+}
+
+TEST(SweepCli, BadArgumentsGiveOneErrorLineAndWriteNothing) {
+  const fs::path dir = temp_folder() / "bad";
+  const std::string outputs = " --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.png").string();
+  const std::string base = "sweep --scene " + kDemo + " --size 32x18 --frames 1";
+  struct Case {
+    std::string args, expected;
+  };
+  const Case cases[] = {
+      {base + " --spp 5" + outputs, "5"},
+      {base + " --spp 4 --csv " + (dir / "s.txt").string() + " --plot " + (dir / "s.png").string(), ".csv"},
+      {base + " --spp 4 --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.jpg").string(), ".png"},
+      {"sweep --scene " + kDemo + " --frames 0 --spp 4" + outputs, "frames"},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = run_cli(c.args);
+    EXPECT_NE(r.exit_code, 0) << c.args;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+    EXPECT_FALSE(fs::exists(dir / "s.csv")) << c.args;
+    EXPECT_FALSE(fs::exists(dir / "s.png")) << c.args;
+  }
+}
+
+}  // namespace
+}  // namespace ontile
