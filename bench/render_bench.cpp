@@ -3,6 +3,8 @@
 // of repeated frames, split into binning (geometry) and tile execution.
 #include <benchmark/benchmark.h>
 
+#include "util/heap_tuning.h"
+
 #include "bench_scenes.h"
 #include "pipelines/render_frame.h"
 
@@ -55,4 +57,13 @@ ONTILE_FRAME_BENCH(BM_ToyCar);
 }  // namespace
 }  // namespace ontile
 
-BENCHMARK_MAIN();
+// Google Benchmark's main, with freed memory kept in the heap so every iteration runs in the
+// steady state (util/heap_tuning.h).
+int main(int argc, char** argv) {
+  ontile::keep_freed_memory_in_the_heap();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,7 +1,6 @@
 // `ontile sweep`: time against error. Renders a 64-spp ray-traced reference once, then the
 // lambert pipeline at every sweep setting (MSAA, subpixel precision, depth format and reversed
 // Z, normal storage, texture filtering), and writes the measurements as CSV and a plot (PNG).
-#include <malloc.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +14,7 @@
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/heap_tuning.h"
 
 namespace ontile::cli {
 namespace {
@@ -45,18 +45,6 @@ void print_row(const SweepRow& r) {
   }
   std::printf("\n");
   std::fflush(stdout);
-}
-
-// Every frame allocates its surfaces, parameter buffer and tile memories afresh. With glibc's
-// defaults the large ones are mmapped and returned to the kernel when freed, so each frame pays
-// page faults for them (about 40 % of a 640x360 demo frame), and how much depends on the
-// allocation history (glibc adapts its mmap threshold to earlier frees): the cost of a setting
-// would depend on which setting ran before it. Keeping freed memory in the heap (glibc
-// mallopt, M_MMAP_THRESHOLD at its 32 MiB maximum) times every setting in the steady state a
-// real renderer reaches by reusing its buffers.
-void keep_freed_memory_in_the_heap() {
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
 void run_sweep_command(const SweepOptions& o) {
