@@ -40,7 +40,7 @@ void pipeline_benchmark(benchmark::State& state, const std::string& scene_name, 
 
 int register_all() {
   for (const std::string scene : {"demo", "atrium", "DamagedHelmet", "ToyCar"}) {
-    for (const std::string pipeline : pipeline_names()) {
+    for (const std::string& pipeline : pipeline_names()) {
       benchmark::RegisterBenchmark(("Pipeline/" + scene + "/" + pipeline).c_str(),
                                    [scene, pipeline](benchmark::State& s) { pipeline_benchmark(s, scene, pipeline); })
           ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3)

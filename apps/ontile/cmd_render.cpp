@@ -19,7 +19,7 @@ namespace {
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
-  int texture_cache_kib = 256, rt_cache_kib = 128;
+  int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
 };
 
@@ -88,6 +88,7 @@ void run_render(const RenderOptions& o) {
   settings.context.tiler.subpixel_bits = o.subpixel_bits;
   settings.context.tiler.architecture = o.arch == "imr" ? Architecture::Imr : Architecture::Tbdr;
   settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
+  settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
   const std::filesystem::path out(o.out);
   const std::string ext = out.extension().string();
@@ -173,6 +174,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));
+  cmd->add_option("--parameter-cache-kib", o->parameter_cache_kib,
+                  "Model an L2 (16-way, 64-byte lines) for parameter-buffer reads, in KiB (default 0: none)")
+      ->check(CLI::Range(0, 65536));
   cmd->add_option("--texture-cache-kib", o->texture_cache_kib, "Texture cache size in KiB (16-way, 64-byte lines; default 256)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
   cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")

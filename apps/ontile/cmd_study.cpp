@@ -51,6 +51,9 @@ void add_study_command(CLI::App& app) {
       ->check(CLI::Range(32, 1024));
   cmd->add_option("--lights", o->settings.lights, "Generated point lights (default 48, as the sample)")->check(CLI::Range(0, 65536));
   cmd->add_option("--frames", o->settings.frames, "Frames per variant; time is their median (default 1)")->check(CLI::Range(1, 100));
+  cmd->add_option("--parameter-cache-kib", o->settings.parameter_cache_kib,
+                  "Model an L2 for parameter-buffer reads, in KiB (default 0: none)")
+      ->check(CLI::Range(0, 65536));
   cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--markdown", o->markdown, "Also write the tables to this file");
   cmd->callback([o] { run_deferred_study(*o); });

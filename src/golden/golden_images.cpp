@@ -16,7 +16,7 @@ std::vector<GoldenCase> golden_cases(const std::filesystem::path& source_dir,
   std::vector<GoldenCase> cases;
   const std::filesystem::path demo = source_dir / "scenes" / "demo.glb";
   for (const std::string& p : pipeline_names()) {
-    GoldenCase c{"demo_" + p, demo, p};
+    GoldenCase c{"demo_" + p, demo, p, 480, 270, {}};
     // The forward and deferred pipelines are shown with generated point lights.
     if (p == "forward" || p.starts_with("deferred")) c.options = {{"lights", "16"}};
     cases.push_back(c);
@@ -28,7 +28,7 @@ std::vector<GoldenCase> golden_cases(const std::filesystem::path& source_dir,
     for (const std::string p : {"lambert", "cartoon"}) {
       const auto names = pipeline_names();
       if (std::find(names.begin(), names.end(), p) == names.end()) continue;
-      cases.push_back({std::string(stem) + "_" + p, shared_assets / relative, p, 320, 240});
+      cases.push_back({std::string(stem) + "_" + p, shared_assets / relative, p, 320, 240, {}});
     }
   }
   return cases;

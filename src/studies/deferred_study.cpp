@@ -77,6 +77,7 @@ std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, cons
     settings.context.threads = s.threads;
     settings.context.tiler.tile_size_px = s.tile_size_px;
     settings.context.tiler.color_budget_bits_per_px = s.color_budget_bits_per_px;
+    settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(s.parameter_cache_kib) * 1024;
     for (const auto& [key, value] : v.options) settings.options.set(key, value);
     StudyRow row;
     row.variant = v;
@@ -109,7 +110,9 @@ std::string deferred_study_markdown(const std::vector<StudyRow>& rows, const Stu
   md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", " +
         std::to_string(s.tile_size_px) + "x" + std::to_string(s.tile_size_px) + " tiles, " +
         std::to_string(s.color_budget_bits_per_px) + "-bit colour budget, " + std::to_string(s.lights) +
-        " point lights; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+        " point lights" +
+        (s.parameter_cache_kib > 0 ? ", a " + std::to_string(s.parameter_cache_kib) + " KiB parameter-buffer read cache" : "") +
+        "; MiB per frame (1 MiB = 2^20 bytes).\n\n";
   md += "| variant | passes | tile | tiles | read | written | attachment load | attachment store | resolve | texture | "
         "vertex+index | param. write | param. read | frame ms |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

@@ -26,6 +26,7 @@ struct StudySettings {
   int threads = 0;
   int lights = 48;  // the sample's Sponza lights: 8 x 2 x 3 point lights
   int frames = 1;   // frame time is the median over this many frames
+  int parameter_cache_kib = 0;  // an L2 model for parameter-buffer reads (0: none)
 };
 
 struct StudyRow {

@@ -67,6 +67,7 @@ struct Chunk {
   std::vector<float>& varyings;
   std::vector<uint32_t> entry_tile;      // tile of each (tile, triangle) pair
   std::vector<uint32_t> entry_triangle;  // chunk-local triangle of each pair
+  uint32_t clipped_vertices = 0;
   GeometryCounters counters;
 };
 
@@ -105,9 +106,11 @@ void bin_into_tiles(const TriangleSetup& t, uint32_t local_index, const TileGrid
 }
 
 void emit_triangle(const TriangleSetup& setup, const float* const vertex_varyings[3],
-                   int varying_count, uint32_t primitive_id, const TileGrid& grid, Chunk& chunk) {
+                   const uint32_t vertex_ids[3], int varying_count, uint32_t primitive_id,
+                   const TileGrid& grid, Chunk& chunk) {
   BinnedTriangle bt;
   bt.setup = setup;
+  for (int k = 0; k < 3; ++k) bt.vertex[k] = vertex_ids[k];
   bt.subpass = chunk.subpass;
   bt.draw = chunk.draw;
   bt.primitive_id = primitive_id;
@@ -158,7 +161,8 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
       const SetupResult r = setup_triangle(pos, grid.width_px, grid.height_px, draw.raster.cull,
                                            draw.raster.front_face, setup, grid.subpixel_bits);
       if (r == SetupResult::Ok) {
-        emit_triangle(setup, var, n, primitive_id, grid, chunk);
+        const uint32_t ids[3] = {draw.indices[3 * tri], draw.indices[3 * tri + 1], draw.indices[3 * tri + 2]};
+        emit_triangle(setup, var, ids, n, primitive_id, grid, chunk);
       } else if (r == SetupResult::Culled) {
         ++c.triangles_culled;
       } else if (r == SetupResult::ZeroArea) {
@@ -181,11 +185,14 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
                                            draw.raster.cull, draw.raster.front_face, setup,
                                            grid.subpixel_bits);
       if (r == SetupResult::Ok) {
-        emit_triangle(setup, fan_var, n, primitive_id, grid, chunk);
+        const uint32_t base = kClippedVertex | chunk.clipped_vertices;
+        const uint32_t ids[3] = {base, base + static_cast<uint32_t>(i), base + static_cast<uint32_t>(i + 1)};
+        emit_triangle(setup, fan_var, ids, n, primitive_id, grid, chunk);
         any_emitted = true;
       }
       any_culled = any_culled || r == SetupResult::Culled;
     }
+    chunk.clipped_vertices += static_cast<uint32_t>(polygon.count);
     if (!any_emitted) ++(any_culled ? c.triangles_culled : c.triangles_outside);
   }
   c.triangles_binned += chunk.triangles.size();
@@ -236,7 +243,7 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
   for (size_t i = 0; i < inputs.size(); ++i) {
     chunks.push_back(Chunk{inputs[i].subpass, inputs[i].draw, inputs[i].first_triangle,
                            inputs[i].triangle_count, pb.chunks[i].triangles,
-                           pb.chunks[i].varyings, {}, {}, {}});
+                           pb.chunks[i].varyings, {}, {}, 0, {}});
   }
   tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
     Chunk& c = chunks[i];
@@ -244,7 +251,10 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
                   c);
   });
   shaded.clear();
-  for (const Chunk& c : chunks) pb.counters.add(c.counters);
+  for (size_t i = 0; i < chunks.size(); ++i) {
+    pb.counters.add(chunks[i].counters);
+    pb.chunks[i].clipped_vertices = chunks[i].clipped_vertices;
+  }
 
   // Per-tile lists (CSR) by a stable counting sort of the (tile, triangle) pairs, which the
   // chunks hold in submission order.

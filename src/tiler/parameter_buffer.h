@@ -18,7 +18,12 @@ struct BinnedTriangle {
   uint32_t subpass = 0;
   uint32_t draw = 0;            // index into the subpass's draws
   uint32_t primitive_id = 0;
+  // The post-transform vertices the record references (for the parameter-cache layout): an
+  // index into the draw's shaded vertices, or kClippedVertex | a chunk-local index of the
+  // vertices clipping created.
+  uint32_t vertex[3] = {0, 0, 0};
 };
+constexpr uint32_t kClippedVertex = 0x80000000u;
 
 struct TileGrid {
   int width_px = 0, height_px = 0;
@@ -42,6 +47,7 @@ inline uint32_t post_transform_vertex_bytes(int varying_count) {
 struct TriangleChunk {
   std::vector<BinnedTriangle> triangles;
   std::vector<float> varyings;
+  uint32_t clipped_vertices = 0;  // post-transform vertices clipping added
 };
 
 // A tile-list entry names a triangle as (chunk << kChunkLocalBits) | index within the chunk.

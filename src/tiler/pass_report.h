@@ -60,6 +60,7 @@ struct PassReport {
   TileCounters tiles;
   std::vector<AttachmentTraffic> attachments;
   TextureTraffic texture;
+  TextureTraffic parameter_cache;  // lookups when the parameter cache is modelled (else zero)
   uint64_t render_target_cache_hits = 0, render_target_cache_misses = 0;  // IMR only
   // Wall-clock times (not deterministic; never part of comparisons).
   double binning_ms = 0.0;

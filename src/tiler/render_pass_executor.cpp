@@ -213,6 +213,10 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
   report.texture = replay_texture_traces(texture_cache, traces);
+  if (config.parameter_cache.size_bytes > 0 && config.architecture == Architecture::Tbdr) {
+    report.parameter_cache = replay_parameter_reads(params, pass, config.parameter_cache);
+    report.tiles.parameter_bytes_read = report.parameter_cache.bytes_read;
+  }
 
   // Every tile loads and stores its whole area, so attachment traffic is the surface size.
   const uint64_t pixels = static_cast<uint64_t>(pass.width_px) * pass.height_px;

@@ -3,6 +3,7 @@
 // and count the external memory traffic.
 #pragma once
 #include "tiler/imr_model.h"
+#include "tiler/parameter_cache.h"
 #include "tiler/pass_report.h"
 #include "tiler/texture_cache.h"
 #include "tiler/render_pass.h"
@@ -19,6 +20,7 @@ struct TilerConfig {
   // subPixelPrecisionBits); anything else makes execute_render_pass throw.
   int subpixel_bits = kSubpixelBits;
   TextureCacheConfig texture_cache;
+  ParameterCacheConfig parameter_cache;         // TBDR only; off by default
   RenderTargetCacheConfig render_target_cache;  // IMR only
 };
 

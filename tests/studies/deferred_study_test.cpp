@@ -45,6 +45,15 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
   EXPECT_EQ(resolve(rows[7]), 4 * px);
   for (const StudyRow& r : rows) EXPECT_GT(r.bytes_by_category.at("parameter_buffer_read"), 0u) << r.variant.label;
 
+  // A modelled L2 in front of the parameter buffer only lowers its reads.
+  StudySettings cached = s;
+  cached.parameter_cache_kib = 64;
+  const std::vector<StudyRow> with_cache = run_study(scene, cached, {deferred_study_variants(s.lights)[1]});
+  EXPECT_LT(with_cache[0].bytes_by_category.at("parameter_buffer_read"), rows[1].bytes_by_category.at("parameter_buffer_read"));
+  EXPECT_EQ(with_cache[0].bytes_written, rows[1].bytes_written);
+  EXPECT_EQ(with_cache[0].bytes_read - with_cache[0].bytes_by_category.at("parameter_buffer_read"),
+            rows[1].bytes_read - rows[1].bytes_by_category.at("parameter_buffer_read"));
+
   const std::string md = deferred_study_markdown(rows, s, "demo.glb");
   for (const char* expected : {"| two render passes | 2 |", "949.4", "389.0", "| on tile |", "| separate pass |"}) {
     EXPECT_NE(md.find(expected), std::string::npos) << expected;
