@@ -11,31 +11,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "support/cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
+using ontile::test::CliRun;
+using ontile::test::run_cli;
 
-CliRun run_cli(const std::string& args) {
-  const std::string cmd = std::string(ONTILE_CLI) + " " + args + " 2>&1";
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf;
-  while (size_t n = fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-fs::path temp_folder() {
-  const fs::path dir = fs::temp_directory_path() / ("ontile_reference_cli_test_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path temp_folder() { return ontile::test::temp_folder("ontile_reference_cli_test"); }
 
 std::vector<std::string> exr_channels(const fs::path& path) {
   auto in = OIIO::ImageInput::open(path.string());
