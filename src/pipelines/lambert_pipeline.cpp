@@ -26,7 +26,7 @@ LambertFrame render_lambert(RenderContext& context, const FrameInputs& in, const
   frame.color = context.create_surface("color", PixelFormat::RGBA8_SRGB, in.width_px, in.height_px);
   const int samples = options.msaa_samples;
   std::vector<AttachmentDesc> attachments;
-  const glm::vec4 clear_color(0.05f, 0.05f, 0.08f, 1.0f);
+  const glm::vec4 clear_color = lit::kBackgroundColor;
   if (samples == 1) {
     attachments.push_back({"color", PixelFormat::RGBA8_SRGB, LoadAction::Clear, StoreAction::Store,
                            clear_color, frame.color, nullptr});

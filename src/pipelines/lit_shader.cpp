@@ -117,10 +117,16 @@ std::unique_ptr<RenderMaterial> make_lit_material(const Shader& lit_shader, cons
   return m;
 }
 
+PropertyBlock lighting_globals(const DirectionalLighting& l) {
+  PropertyBlock globals;
+  globals.vectors["_MainLightDirection"] = glm::vec4(l.to_light, 0.0f);
+  globals.vectors["_MainLightColor"] = glm::vec4(l.radiance, 1.0f);
+  globals.vectors["_AmbientColor"] = glm::vec4(l.ambient, 1.0f);
+  return globals;
+}
+
 void set_lighting_globals(CommandBuffer& cmd, const DirectionalLighting& l) {
-  cmd.set_global_vector("_MainLightDirection", glm::vec4(l.to_light, 0.0f));
-  cmd.set_global_vector("_MainLightColor", glm::vec4(l.radiance, 1.0f));
-  cmd.set_global_vector("_AmbientColor", glm::vec4(l.ambient, 1.0f));
+  for (const auto& [name, value] : lighting_globals(l).vectors) cmd.set_global_vector(name, value);
 }
 
 void set_lighting_globals(RenderContext& ctx, const DirectionalLighting& l) {

@@ -14,6 +14,9 @@ namespace ontile {
 namespace lit {
 constexpr const char* kForwardLit = "ForwardLit";
 constexpr const char* kDepthOnly = "DepthOnly";
+// The clear colour of the lit pipelines (lambert, forward, deferred) where no surface is drawn;
+// the reference renderer shows it for rays that hit nothing.
+constexpr glm::vec4 kBackgroundColor(0.05f, 0.05f, 0.08f, 1.0f);
 }  // namespace lit
 
 // Texture filtering of the Lit materials' maps: the glTF samplers as authored, or every map
@@ -37,6 +40,8 @@ std::unique_ptr<Shader> make_lit_shader(const LitShaderOptions& options = {});
 // the material uses; queue Geometry / AlphaTest / Transparent; cull Off when double-sided.
 std::unique_ptr<RenderMaterial> make_lit_material(const Shader& lit_shader, const Material& gltf);
 // Globals _MainLightDirection (towards the light), _MainLightColor, _AmbientColor.
+// The globals below as a property block (what a draw's DrawContext sees after them).
+PropertyBlock lighting_globals(const DirectionalLighting& lighting);
 void set_lighting_globals(CommandBuffer& cmd, const DirectionalLighting& lighting);
 void set_lighting_globals(RenderContext& ctx, const DirectionalLighting& lighting);
 

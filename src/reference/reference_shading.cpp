@@ -7,35 +7,18 @@
 #include "util/error.h"
 
 namespace ontile {
-namespace {
-
-// The lambert pipeline's colour clear value (lambert_pipeline.cpp, attachment "color"): pixels
-// no opaque surface covers show it.
-constexpr glm::vec4 kLambertClearColor(0.05f, 0.05f, 0.08f, 1.0f);
-
-// The globals set_lighting_globals (lit_shader.cpp) records before the lambert pass.
-PropertyBlock lambert_globals(const Scene& scene) {
-  const DirectionalLighting lighting = main_directional_light(scene);
-  PropertyBlock globals;
-  globals.vectors["_MainLightDirection"] = glm::vec4(lighting.to_light, 0.0f);
-  globals.vectors["_MainLightColor"] = glm::vec4(lighting.radiance, 1.0f);
-  globals.vectors["_AmbientColor"] = glm::vec4(lighting.ambient, 1.0f);
-  return globals;
-}
-
-}  // namespace
 
 LambertReferenceScene make_lambert_reference_scene(const Scene& scene, const Camera& camera,
                                                    int width_px, int height_px) {
   LambertReferenceScene ref;
   ref.camera = camera_matrices(camera, double(width_px) / height_px);
-  ref.clear_color = kLambertClearColor;
+  ref.clear_color = lit::kBackgroundColor;
   ref.lit_shader = make_lit_shader();
   const Shader& lit = *ref.lit_shader;
   ref.renderers = make_scene_renderers(scene, [&](const Material& m) { return make_lit_material(lit, m); });
   const ShaderPass* pass = lit.find_light_mode(lit::kForwardLit);
   if (!pass) throw Error("reference renderer: the Lit shader has no ForwardLit pass");
-  const PropertyBlock globals = lambert_globals(scene);
+  const PropertyBlock globals = lighting_globals(main_directional_light(scene));
 
   std::vector<CullMode> cull_modes;
   for (const Renderer& r : ref.renderers.renderers) {

@@ -5,12 +5,13 @@
 #include "pipelines/deferred/deferred_options.h"
 #include "pipelines/deferred/deferred_shaders.h"
 #include "pipelines/deferred/scene_lighting_setup.h"
+#include "pipelines/lit_shader.h"
 
 namespace ontile {
 namespace {
 
-// The background where no geometry is drawn (the lambert pipeline's clear colour).
-constexpr glm::vec4 kBackground(0.05f, 0.05f, 0.08f, 1.0f);
+// The background where no geometry is drawn (the lit pipelines' clear colour).
+constexpr glm::vec4 kBackground = lit::kBackgroundColor;
 
 // What every variant prepares before recording: lights, shaders, renderers and culling. Built
 // in place (the shader library points to the lighting), alive until submit() returns.
