@@ -35,23 +35,10 @@ inline FaceCounts draw_face_counts(const std::vector<glm::vec4>& positions,
   Surface* target = ctx.create_surface("faces", PixelFormat::RGBA32_FLOAT, width, height);
   ClipSpaceVertexShader vs(positions, {}, 0);
   FaceCountShader fs;
-  ctx.begin_render_pass("faces", width, height, 1,
-                        {{"faces", PixelFormat::RGBA32_FLOAT, LoadAction::Clear, StoreAction::Store,
-                          glm::vec4(0.0f), target, nullptr}},
-                        -1);
-  ctx.begin_subpass({0});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = indices.data();
-  d.index_count = static_cast<uint32_t>(indices.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  d.blend.mode = BlendMode::Additive;
-  ctx.draw(d);
-  ctx.end_subpass();
-  ctx.end_render_pass();
+  record_additive_pass(ctx, "faces", width, height, 1,
+                       {"faces", PixelFormat::RGBA32_FLOAT, LoadAction::Clear, StoreAction::Store,
+                        glm::vec4(0.0f), target, nullptr},
+                       vs, fs, indices);
   FaceCounts r;
   r.report = ctx.submit();
   r.width = width;

@@ -3,6 +3,7 @@
 // varyings written out, so tests can assert exact per-pixel outcomes.
 #pragma once
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -53,6 +54,27 @@ inline glm::vec4 pixel_to_clip(double x, double y, int width, int height, double
                    static_cast<float>(w));
 }
 
+// Records one pass with a single colour attachment and one draw of `indices`: no culling, no
+// depth, additive blending (so overlapping coverage adds up).
+inline void record_additive_pass(RenderContext& ctx, const std::string& name, int width, int height, int samples,
+                                 const AttachmentDesc& target, const ClipSpaceVertexShader& vs,
+                                 const FragmentShader& fs, const std::vector<uint32_t>& indices) {
+  ctx.begin_render_pass(name, width, height, samples, {target}, -1);
+  ctx.begin_subpass({0});
+  DrawCall d;
+  d.vertex_shader = &vs;
+  d.fragment_shader = &fs;
+  d.vertex_count = vs.vertex_count();
+  d.indices = indices.data();
+  d.index_count = static_cast<uint32_t>(indices.size());
+  d.raster.cull = CullMode::None;
+  d.raster.depth_test = false;
+  d.blend.mode = BlendMode::Additive;
+  ctx.draw(d);
+  ctx.end_subpass();
+  ctx.end_render_pass();
+}
+
 struct CountResult {
   std::vector<float> counts;  // per pixel (sample 0)
   FrameReport report;
@@ -81,20 +103,7 @@ inline CountResult draw_counting(const std::vector<glm::vec4>& positions,
     count.resolve_surface = target;
     count.store = StoreAction::Resolve;
   }
-  ctx.begin_render_pass("count", width, height, samples, {count}, -1);
-  ctx.begin_subpass({0});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = indices.data();
-  d.index_count = static_cast<uint32_t>(indices.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  d.blend.mode = BlendMode::Additive;
-  ctx.draw(d);
-  ctx.end_subpass();
-  ctx.end_render_pass();
+  record_additive_pass(ctx, "count", width, height, samples, count, vs, fs, indices);
   CountResult r;
   r.report = ctx.submit();
   r.counts.resize(static_cast<size_t>(width) * height);

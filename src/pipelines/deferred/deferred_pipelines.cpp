@@ -10,8 +10,6 @@
 namespace ontile {
 namespace {
 
-// The background where no geometry is drawn (the lit pipelines' clear colour).
-constexpr glm::vec4 kBackground = lit::kBackgroundColor;
 
 // What every variant prepares before recording: lights, shaders, renderers and culling. Built
 // in place (the shader library points to the lighting), alive until submit() returns.
@@ -74,7 +72,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
     std::vector<AttachmentDesc> a;
     std::vector<int> outputs;
     if (layout.light_in_gbuffer) {
-      a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear, StoreAction::Store, kBackground));
+      a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear, StoreAction::Store, lit::kBackgroundColor));
       outputs.push_back(0);
     }
     for (int k = 0; k < targets; ++k) {
@@ -96,7 +94,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
     // clears the light target.
     const LoadAction light_load = layout.light_in_gbuffer ? LoadAction::Load : LoadAction::Clear;
     ctx.begin_render_pass("lighting", w, h, 1,
-                          {attachment("light", layout.light_format, light, light_load, StoreAction::Store, kBackground)}, -1);
+                          {attachment("light", layout.light_format, light, light_load, StoreAction::Store, lit::kBackgroundColor)}, -1);
     ctx.begin_subpass({0});
     ctx.draw_full_screen(&setup.library.lighting_material(true), deferred::kLightingPass);
     ctx.end_subpass();
@@ -140,7 +138,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
   const StoreAction on_tile_store = options.store_gbuffer ? StoreAction::Store : StoreAction::DontCare;
   std::vector<AttachmentDesc> a;
   a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear,
-                         options.tonemap ? StoreAction::DontCare : StoreAction::Store, kBackground));
+                         options.tonemap ? StoreAction::DontCare : StoreAction::Store, lit::kBackgroundColor));
   a.push_back(attachment("depth", layout.depth_format, on_tile("depth", layout.depth_format), LoadAction::Clear,
                          on_tile_store, glm::vec4(1.0f)));
   std::vector<int> gbuffer_outputs, lighting_inputs{1};
@@ -197,9 +195,9 @@ FrameOutputs ForwardPipeline::render(RenderContext& ctx, const FrameInputs& in) 
   };
   std::vector<AttachmentDesc> a;
   if (options.tonemap) {
-    a.push_back(attachment("light", options.layout.light_format, nullptr, LoadAction::Clear, StoreAction::DontCare, kBackground));
+    a.push_back(attachment("light", options.layout.light_format, nullptr, LoadAction::Clear, StoreAction::DontCare, lit::kBackgroundColor));
   } else {
-    a.push_back(display_attachment(LoadAction::Clear, kBackground));
+    a.push_back(display_attachment(LoadAction::Clear, lit::kBackgroundColor));
   }
   a.push_back(attachment("depth", PixelFormat::D32_FLOAT, nullptr, LoadAction::Clear, StoreAction::DontCare, glm::vec4(1.0f)));
   if (options.tonemap) a.push_back(display_attachment(LoadAction::DontCare, glm::vec4(0.0f)));

@@ -16,7 +16,9 @@ namespace {
 
 constexpr const char* kFromTextures = "_GBUFFER_TEXTURES";
 
-PbrMaterialParams material_params(const DrawContext& ctx, std::shared_ptr<const Texture2D> keep[3]) {
+// Texture pointers stay valid after the shared_ptrs here go: the material's properties own
+// scene textures, and the frame executor keeps render-target snapshots for the pass.
+PbrMaterialParams material_params(const DrawContext& ctx) {
   const PropertyBlock& props = ctx.properties;
   PbrMaterialParams p;
   p.base_color = props.get_vector("_BaseColor", glm::vec4(1.0f));
@@ -24,12 +26,9 @@ PbrMaterialParams material_params(const DrawContext& ctx, std::shared_ptr<const 
   p.roughness = props.get_float("_Roughness", 1.0f);
   p.emission = glm::vec3(props.get_vector("_EmissionColor"));
   p.alpha_cutoff = props.get_float("_Cutoff", 0.5f);
-  keep[0] = ctx.texture("_BaseMap", &p.base_sampler);
-  keep[1] = ctx.texture("_MetallicRoughnessMap", &p.metallic_roughness_sampler);
-  keep[2] = ctx.texture("_EmissionMap", &p.emission_sampler);
-  p.base_map = keep[0].get();
-  p.metallic_roughness_map = keep[1].get();
-  p.emission_map = keep[2].get();
+  p.base_map = ctx.texture("_BaseMap", &p.base_sampler).get();
+  p.metallic_roughness_map = ctx.texture("_MetallicRoughnessMap", &p.metallic_roughness_sampler).get();
+  p.emission_map = ctx.texture("_EmissionMap", &p.emission_sampler).get();
   return p;
 }
 
@@ -49,7 +48,7 @@ std::unique_ptr<FragmentShader> lit_variant(const RenderMaterial& m, const PbrMa
 const Texture2D* required_texture(const DrawContext& ctx, const std::string& name) {
   const std::shared_ptr<const Texture2D> t = ctx.texture(name);
   if (!t) throw Error("deferred lighting: texture '" + name + "' is not bound (the classic variant binds it after the G-buffer pass)");
-  return t.get();  // kept alive by the frame executor for the pass
+  return t.get();  // the frame executor keeps render-target snapshots alive for the pass
 }
 
 PassState full_screen_state(bool additive) {
@@ -75,16 +74,14 @@ DeferredShaderLibrary::DeferredShaderLibrary(const GBufferLayout& layout, const 
   lit_shader_->add_pass({"GBuffer", deferred::kGBuffer, PassState{}, [this, mesh_functors](const DrawContext& ctx) {
                            DrawFunctors f;
                            mesh_functors(ctx, f);
-                           std::shared_ptr<const Texture2D> keep[3];
-                           const PbrMaterialParams p = material_params(ctx, keep);
+                           const PbrMaterialParams p = material_params(ctx);
                            f.fragment = lit_variant<GBufferShader>(*ctx.material, p, layout_, lighting_.ambient);
                            return f;
                          }});
   lit_shader_->add_pass({"ForwardLit", deferred::kForwardLit, PassState{}, [this, mesh_functors](const DrawContext& ctx) {
                            DrawFunctors f;
                            mesh_functors(ctx, f);
-                           std::shared_ptr<const Texture2D> keep[3];
-                           const PbrMaterialParams p = material_params(ctx, keep);
+                           const PbrMaterialParams p = material_params(ctx);
                            f.fragment = lit_variant<ForwardLitShader>(*ctx.material, p, lighting_,
                                                                      glm::vec3(ctx.camera.position));
                            return f;

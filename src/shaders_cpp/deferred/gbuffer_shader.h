@@ -16,17 +16,12 @@ class GBufferShader final : public FragmentShader {
 
   void shade(const QuadFragment& quad, QuadOutput& out) const override {
     SurfacePoint surface[kQuadLanes];
-    evaluate_pbr_material<kBaseMap, kMetallicRoughnessMap, kEmissionMap>(material_, quad, surface);
+    const uint8_t lanes =
+        evaluate_pbr_quad<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, quad, out, surface);
     const int first_target = layout_.light_in_gbuffer ? 1 : 0;
     for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
+      if (!((lanes >> lane) & 1u)) continue;
       const SurfacePoint& s = surface[lane];
-      if constexpr (kAlphaTest) {
-        if (s.base_color.w < material_.alpha_cutoff) {
-          out.discard(lane);
-          continue;
-        }
-      }
       const GBufferSurface g{glm::vec3(s.base_color), s.metallic, s.roughness, shading_normal(quad, lane)};
       glm::vec4 targets[3];
       encode_gbuffer(layout_, g, targets);

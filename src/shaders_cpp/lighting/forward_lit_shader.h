@@ -16,16 +16,11 @@ class ForwardLitShader final : public FragmentShader {
 
   void shade(const QuadFragment& quad, QuadOutput& out) const override {
     SurfacePoint surface[kQuadLanes];
-    evaluate_pbr_material<kBaseMap, kMetallicRoughnessMap, kEmissionMap>(material_, quad, surface);
+    const uint8_t lanes =
+        evaluate_pbr_quad<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, quad, out, surface);
     for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
+      if (!((lanes >> lane) & 1u)) continue;
       const SurfacePoint& s = surface[lane];
-      if constexpr (kAlphaTest) {
-        if (s.base_color.w < material_.alpha_cutoff) {
-          out.discard(lane);
-          continue;
-        }
-      }
       const BrdfInputs brdf = metallic_roughness_brdf(glm::vec3(s.base_color), s.metallic, s.roughness);
       const glm::vec3 position = quad.var3(MeshVertexShader::kWorldPos, lane);
       const glm::vec3 to_view = glm::normalize(camera_position_ - position);

@@ -62,6 +62,24 @@ void evaluate_pbr_material(const PbrMaterialParams& p, const QuadFragment& quad,
   }
 }
 
+// The material over the quad plus the glTF MASK alpha test (3.9.4): returns the lanes left to
+// shade; alpha-tested lanes below the cutoff are discarded in `out`.
+template <bool kBaseMap, bool kAlphaTest, bool kMetallicRoughnessMap, bool kEmissionMap>
+uint8_t evaluate_pbr_quad(const PbrMaterialParams& p, const QuadFragment& quad, QuadOutput& out,
+                          SurfacePoint surface[kQuadLanes]) {
+  evaluate_pbr_material<kBaseMap, kMetallicRoughnessMap, kEmissionMap>(p, quad, surface);
+  uint8_t lanes = 0;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (!quad.lane_active(lane)) continue;
+    if (kAlphaTest && surface[lane].base_color.w < p.alpha_cutoff) {
+      out.discard(lane);
+      continue;
+    }
+    lanes |= static_cast<uint8_t>(1u << lane);
+  }
+  return lanes;
+}
+
 // The interpolated vertex normal, normalised and flipped for back faces (seen only on
 // double-sided materials).
 inline glm::vec3 shading_normal(const QuadFragment& quad, int lane) {
