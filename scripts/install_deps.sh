@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libtbb-dev
           libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
-          libstb-dev openimageio-tools)
+          libstb-dev openimageio-tools libhwy-dev)
 # openimageio-tools: Debian's OpenImageIO CMake config references its command-line tools.
 missing=()
 for p in "${packages[@]}"; do
