@@ -1,8 +1,11 @@
 // `ontile render`: renders a scene with a pipeline, writes the image (and optionally the JSON
-// traffic report) and prints a summary with the traffic table.
+// traffic report) and prints a summary with the traffic table; --frames N times N frames.
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "commands.h"
 #include "context/frame_report.h"
@@ -12,6 +15,7 @@
 #include "scene/gltf_loader.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/heap_tuning.h"
 
 namespace ontile::cli {
 namespace {
@@ -21,7 +25,30 @@ struct RenderOptions {
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
+  std::optional<int> frames;  // --frames: time this many frames after a warm-up
 };
+
+// Renders once (the warm-up when timing), then `frames` more times with each frame timed by the
+// wall clock of the whole render call; returns the last frame.
+template <class Render>
+auto render_timed(int frames, std::vector<double>& ms, Render&& render) {
+  auto frame = render();
+  for (int i = 0; i < frames; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    frame = render();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return frame;
+}
+
+// The same three lines as bench/llvmpipe's runner prints, so scripts read both alike.
+void print_frame_times(std::vector<double> ms) {
+  if (ms.empty()) return;
+  std::sort(ms.begin(), ms.end());
+  const size_t n = ms.size();
+  const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+  std::printf("frames: %zu after 1 warm-up\nmedian_ms: %.3f\nmin_ms: %.3f\n", n, median, ms.front());
+}
 
 void ensure_parent_folder(const std::filesystem::path& path) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
@@ -60,15 +87,23 @@ void run_aov_render(const RenderOptions& o, const RenderSettings& settings) {
     throw Error(o.out + ": --aov writes float channels; use an .exr output");
   }
   const Scene scene = load_gltf(o.scene);
-  const AovFrame frame = render_aov_frame(scene, settings, {kind});
+  std::vector<double> ms;
+  const AovFrame frame =
+      render_timed(o.frames.value_or(0), ms, [&] { return render_aov_frame(scene, settings, {kind}); });
   ensure_parent_folder(out);
   write_exr_channels(out, settings.width_px, settings.height_px, aov_channel_names(kind),
                      aov_channels(*frame.surfaces[0], kind));
   std::printf("%s: %dx%d, AOV %s, %.1f ms on %d threads\nwrote %s\n", o.scene.c_str(), settings.width_px,
               settings.height_px, o.aov.c_str(), frame.report.total_ms, frame.report.threads, o.out.c_str());
+  print_frame_times(ms);
 }
 
 void run_render(const RenderOptions& o) {
+  if (o.frames && *o.frames < 1) {
+    throw UsageError("--frames " + std::to_string(*o.frames) + ": expected a frame count >= 1");
+  }
+  // Steady-state frame times: the frames reuse the heap instead of fresh pages (heap_tuning.h).
+  if (o.frames) keep_freed_memory_in_the_heap();
   RenderSettings settings;
   parse_size(o.size, settings.width_px, settings.height_px);
   settings.pipeline = o.pipeline;
@@ -101,7 +136,8 @@ void run_render(const RenderOptions& o) {
     return;
   }
   const Scene scene = load_gltf(o.scene);
-  const RenderedFrame frame = render_frame(scene, settings);
+  std::vector<double> ms;
+  const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, [&] { return render_frame(scene, settings); });
   const FrameReport& report = frame.outputs.report;
 
   ensure_parent_folder(out);
@@ -137,6 +173,7 @@ void run_render(const RenderOptions& o) {
               static_cast<unsigned long long>(report.bytes_written()));
   std::printf("%s", frame_report_table(report).c_str());
   std::printf("wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
+  print_frame_times(ms);
 }
 
 }  // namespace
@@ -171,6 +208,9 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
   cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
   cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");
+  cmd->add_option("--frames", o->frames,
+                  "Render N more frames after one warm-up and print their median and minimum time (ms); "
+                  "the outputs are the last frame's");
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));

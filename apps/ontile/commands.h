@@ -2,7 +2,15 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include "util/error.h"
+
 namespace ontile::cli {
+
+// A bad option value found after parsing: main prints one "error: ..." line and exits with 2.
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
 
 void add_render_command(CLI::App& app);
 void add_gen_scene_command(CLI::App& app);

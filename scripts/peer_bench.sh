@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds ontile and its llvmpipe peer (installing missing Debian packages first) and runs the
+# comparison benchmark: ontile's lambert frame against Mesa llvmpipe at 1920x1080, 1 and 2
+# threads. Arguments go to build/ontile_peer_bench (e.g. --frames 9 --scenes atrium,ToyCar);
+# the table is also written to out/peer_bench.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install_deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > /dev/null
+cmake --build build -j "$(nproc)" --target ontile_peer_bench ontile_llvmpipe
+if [ ! -x build/ontile_peer_bench ]; then
+  echo "error: build/ontile_peer_bench was not built (EGL/GLES or Google Benchmark missing?)" >&2
+  exit 2
+fi
+mkdir -p out
+build/ontile_peer_bench --markdown out/peer_bench.md "$@"
