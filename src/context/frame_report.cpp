@@ -86,6 +86,8 @@ nlohmann::json pass_json(const PassReport& p) {
                                    {"misses", p.render_target_cache_misses}}},
           {"fragments_shaded", p.tiles.fragments_shaded},
           {"fragments_depth_rejected", p.tiles.fragments_depth_rejected},
+          {"cells_rasterized", p.tiles.cells_rasterized},
+          {"cells_hiz_rejected", p.tiles.cells_hiz_rejected},
           {"overdraw", pixels ? static_cast<double>(p.tiles.fragments_shaded) / pixels : 0.0},
           {"geometry", geometry_json(p.geometry)},
           {"attachments", attachments}};
@@ -144,6 +146,10 @@ std::string frame_report_table(const FrameReport& frame) {
                   static_cast<unsigned long long>(p.texture.accesses),
                   static_cast<unsigned long long>(p.texture.hits),
                   static_cast<unsigned long long>(p.texture.misses), mib(p.texture.bytes_read).c_str());
+    out << line;
+    std::snprintf(line, sizeof line, "  %-20s %llu 8x8 cells rasterized, %llu skipped by hierarchical Z\n",
+                  "raster", static_cast<unsigned long long>(p.tiles.cells_rasterized),
+                  static_cast<unsigned long long>(p.tiles.cells_hiz_rejected));
     out << line;
   }
   out << "frame: read " << mib(frame.bytes_read()) << " (" << frame.bytes_read() << " B), written "

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "raster/sample_pattern.h"
+#include "raster/shader_interface.h"
 #include "raster/triangle_setup.h"
 
 namespace ontile {

@@ -1,6 +1,7 @@
 // The contract between the raster core and C++ "shader" functors: vertex shaders write clip
-// positions and varyings; fragment shaders shade one 2x2 quad at a time (so they can take
-// derivatives) and may read their own pixel of input attachments (framebuffer fetch).
+// positions and varyings; fragment shaders shade batches of 2x2 quads (quads so they can take
+// derivatives, batches so the per-fragment cost is arithmetic on structure-of-arrays lanes, not
+// calls) and may read their own pixel of input attachments (framebuffer fetch).
 #pragma once
 #include <cstdint>
 
@@ -72,12 +73,67 @@ struct QuadOutput {
   void discard(int lane) { discard_mask |= static_cast<uint8_t>(1u << lane); }
 };
 
+// Up to kBatchQuads quads of one triangle, in the tile's row-major quad order, shaded by one
+// call. Structure-of-arrays: fragment f is lane (f & 3) of quad (f >> 2). Arrays are valid up
+// to padded_fragment_count() (a multiple of 16, so any SIMD width runs whole vectors); the
+// padding repeats the last quad and its outputs are ignored.
+constexpr int kBatchQuads = 16;
+constexpr int kBatchFragments = kBatchQuads * kQuadLanes;
+
+struct FragmentBatch {
+  int quad_count = 0;
+  int varying_count = 0;       // floats per fragment in varyings
+  int color_output_count = 0;  // colour outputs of the subpass
+  bool front_facing = true;
+  uint32_t primitive_id = 0;
+  int sample = -1;             // as QuadFragment::sample
+  const FramebufferFetch* fetch = nullptr;
+  int32_t quad_x_px[kBatchQuads] = {};
+  int32_t quad_y_px[kBatchQuads] = {};
+  uint8_t lane_mask[kBatchQuads] = {};
+  alignas(64) float depth[kBatchFragments];
+  alignas(64) float varyings[kMaxVaryings][kBatchFragments];
+
+  int fragment_count() const { return quad_count * kQuadLanes; }
+  int padded_fragment_count() const { return (fragment_count() + 15) & ~15; }
+  bool active(int f) const { return (lane_mask[f >> 2] >> (f & 3)) & 1u; }
+  int x_px(int f) const { return quad_x_px[f >> 2] + (f & 1); }
+  int y_px(int f) const { return quad_y_px[f >> 2] + ((f >> 1) & 1); }
+  // Framebuffer fetch at fragment f's own pixel (see QuadFragment::input).
+  glm::vec4 input(int input_slot, int f, int which = -1) const {
+    const int s = which >= 0 ? which : (sample >= 0 ? sample : 0);
+    return fetch->load(input_slot, x_px(f), y_px(f), s);
+  }
+  // Quad q as a QuadFragment, for helpers written per quad (texture LOD from derivatives).
+  void quad(int q, QuadFragment& out) const;
+};
+
+struct BatchOutput {
+  alignas(64) float color[kMaxColorTargets][4][kBatchFragments];  // [target][channel][fragment]
+  uint64_t discard_mask = 0;                                      // bit f: fragment f discarded
+
+  void discard(int f) { discard_mask |= uint64_t{1} << f; }
+  bool discarded(int f) const { return (discard_mask >> f) & 1u; }
+  void set(int target, int f, const glm::vec4& c) {
+    for (int ch = 0; ch < 4; ++ch) color[target][ch][f] = c[ch];
+  }
+  glm::vec4 get(int target, int f) const {
+    return {color[target][0][f], color[target][1][f], color[target][2][f], color[target][3][f]};
+  }
+  // Copies quad q of `quad_out` (targets [0, targets)) into this batch output.
+  void store_quad(int q, const QuadOutput& quad_out, int targets);
+};
+
 class FragmentShader {
  public:
   virtual ~FragmentShader() = default;
+  // A functor overrides at least one of shade() and shade_batch(); each default runs the other.
   // Writes color[k][lane] for each output k of the subpass and each active lane. Called
   // concurrently for different tiles: must not mutate shared state.
-  virtual void shade(const QuadFragment& quad, QuadOutput& out) const = 0;
+  virtual void shade(const QuadFragment& quad, QuadOutput& out) const;
+  // The raster core's entry point: writes every active fragment's outputs. The default loops
+  // over the quads through shade() (for functors no benchmark uses).
+  virtual void shade_batch(const FragmentBatch& batch, BatchOutput& out) const;
   // True when shade() may discard: the depth test then runs after shading (late Z).
   virtual bool may_discard() const { return false; }
   // True to run once per covered sample at the sample's position instead of once per pixel

@@ -2,6 +2,8 @@
 // plus a constant ambient term, with emissive added. Template flags are the keyword variants:
 // a material without a base map, alpha test or emission map runs code without those branches.
 #pragma once
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
@@ -37,41 +39,68 @@ class LambertShader final : public FragmentShader {
   explicit LambertShader(const LambertParams& p) : p_(p) {}
   bool may_discard() const override { return kAlphaTest; }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec2 uv[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(MeshVertexShader::kUv, lane);
-    glm::vec4 albedo[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] = p_.base_color;
-    if constexpr (kBaseMap) {
-      glm::vec4 texel[kQuadLanes];
-      p_.base_map->sample_quad(p_.base_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
+  // Structure-of-arrays over the batch: texture reads per quad (the LOD needs the quad's
+  // derivatives), the lighting arithmetic as plain loops over fragment lanes.
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    const int n = batch.padded_fragment_count();
+    alignas(64) float albedo[4][kBatchFragments];
+    alignas(64) float emissive[3][kBatchFragments];
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
     }
-    // glTF 2.0 3.9.3: emissive = emissiveFactor x emissiveTexture (sRGB).
-    glm::vec3 emissive[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) emissive[lane] = p_.emission;
-    if constexpr (kEmissionMap) {
-      glm::vec4 texel[kQuadLanes];
-      p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) emissive[lane] *= glm::vec3(texel[lane]);
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < n; ++f) emissive[c][f] = p_.emission[c];
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      if constexpr (kAlphaTest) {
-        if (albedo[lane].w < p_.alpha_cutoff) {
-          out.discard(lane);
-          continue;
+    if constexpr (kBaseMap || kEmissionMap) {
+      const float* u = batch.varyings[MeshVertexShader::kUv];
+      const float* v = batch.varyings[MeshVertexShader::kUv + 1];
+      for (int q = 0; q < batch.quad_count; ++q) {
+        const int f0 = q * kQuadLanes;
+        const glm::vec2 uv[kQuadLanes] = {{u[f0], v[f0]}, {u[f0 + 1], v[f0 + 1]},
+                                          {u[f0 + 2], v[f0 + 2]}, {u[f0 + 3], v[f0 + 3]}};
+        glm::vec4 texel[kQuadLanes];
+        if constexpr (kBaseMap) {
+          p_.base_map->sample_quad(p_.base_sampler, uv, texel);
+          for (int lane = 0; lane < kQuadLanes; ++lane) {
+            for (int c = 0; c < 4; ++c) albedo[c][f0 + lane] *= texel[lane][c];
+          }
+        }
+        // glTF 2.0 3.9.3: emissive = emissiveFactor x emissiveTexture (sRGB).
+        if constexpr (kEmissionMap) {
+          p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
+          for (int lane = 0; lane < kQuadLanes; ++lane) {
+            for (int c = 0; c < 3; ++c) emissive[c][f0 + lane] *= texel[lane][c];
+          }
         }
       }
-      glm::vec3 n = quad.var3(MeshVertexShader::kNormal, lane);
-      const float len = glm::length(n);
-      n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-      if (!quad.front_facing) n = -n;  // back faces are seen only on double-sided materials
-      const float n_dot_l = glm::max(glm::dot(n, p_.lighting.to_light), 0.0f);
-      const glm::vec3 rgb = glm::vec3(albedo[lane]) *
-                                (p_.lighting.ambient + p_.lighting.radiance * n_dot_l) +
-                            emissive[lane];
-      out.color[0][lane] = glm::vec4(rgb, albedo[lane].w);
+    }
+    if constexpr (kAlphaTest) {
+      for (int f = 0; f < batch.fragment_count(); ++f) {
+        if (batch.active(f) && albedo[3][f] < p_.alpha_cutoff) out.discard(f);
+      }
+    }
+    const float* nx = batch.varyings[MeshVertexShader::kNormal];
+    const float* ny = batch.varyings[MeshVertexShader::kNormal + 1];
+    const float* nz = batch.varyings[MeshVertexShader::kNormal + 2];
+    // Back faces are seen only on double-sided materials: their normal is flipped.
+    const float facing = batch.front_facing ? 1.0f : -1.0f;
+    const glm::vec3 l = p_.lighting.to_light, ambient = p_.lighting.ambient, radiance = p_.lighting.radiance;
+    float* r = out.color[0][0];
+    float* g = out.color[0][1];
+    float* b = out.color[0][2];
+    float* a = out.color[0][3];
+    for (int f = 0; f < n; ++f) {
+      const float len = std::sqrt(nx[f] * nx[f] + ny[f] * ny[f] + nz[f] * nz[f]);
+      const bool has_length = len > 0.0f;
+      const float x = (has_length ? nx[f] / len : 0.0f) * facing;
+      const float y = (has_length ? ny[f] / len : 0.0f) * facing;
+      const float z = (has_length ? nz[f] / len : 1.0f) * facing;
+      const float dot = x * l.x + y * l.y + z * l.z;
+      const float n_dot_l = dot > 0.0f ? dot : 0.0f;
+      r[f] = albedo[0][f] * (ambient.x + radiance.x * n_dot_l) + emissive[0][f];
+      g[f] = albedo[1][f] * (ambient.y + radiance.y * n_dot_l) + emissive[1][f];
+      b[f] = albedo[2][f] * (ambient.z + radiance.z * n_dot_l) + emissive[2][f];
+      a[f] = albedo[3][f];
     }
   }
 

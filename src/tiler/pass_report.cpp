@@ -25,6 +25,8 @@ void TileCounters::add(const TileCounters& o) {
   fragments_shaded += o.fragments_shaded;
   fragments_depth_rejected += o.fragments_depth_rejected;
   samples_written += o.samples_written;
+  cells_rasterized += o.cells_rasterized;
+  cells_hiz_rejected += o.cells_hiz_rejected;
 }
 
 uint64_t PassReport::attachment_bytes_loaded() const {

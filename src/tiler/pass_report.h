@@ -35,6 +35,11 @@ struct TileCounters {
   uint64_t fragments_shaded = 0;       // covered pixels whose fragment shader ran
   uint64_t fragments_depth_rejected = 0;  // covered pixels with every sample failing depth
   uint64_t samples_written = 0;        // colour/depth sample writes that passed all tests
+  // Hierarchical rasterization (8x8-pixel cells, raster/cell_raster.h): cells a triangle
+  // covered, and covered cells skipped whole because hierarchical Z proved every sample fails
+  // the depth test (their pixels also count in fragments_depth_rejected).
+  uint64_t cells_rasterized = 0;
+  uint64_t cells_hiz_rejected = 0;
 
   void add(const TileCounters& o);
 };

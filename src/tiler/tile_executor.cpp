@@ -1,11 +1,15 @@
-// Per-tile replay of the primitive list (see tile_executor.h): coverage, early or late depth
-// test, quad shading with perspective-correct varyings, blending and quantised writes.
+// Per-tile replay of the primitive list (see tile_executor.h). For each triangle: coverage and
+// early depth per 8x8 cell (trivial reject/accept, SIMD edge evaluation, hierarchical Z), then
+// shading of the surviving quads in the tile's row-major quad order, in batches of up to 16
+// quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
 #include "tiler/tile_executor.h"
 
 #include <bit>
 
-#include "raster/rasterize.h"
+#include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
+#include "tiler/hierarchical_depth.h"
+#include "tiler/quad_batcher.h"
 #include "tiler/tile_load_store.h"
 #include "util/error.h"
 
@@ -37,195 +41,185 @@ class TileFetch final : public FramebufferFetch {
   int depth_index_;
 };
 
-uint8_t lanes_of(QuadCoverage coverage) {
-  uint8_t lanes = 0;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (lane_coverage(coverage, lane)) lanes |= static_cast<uint8_t>(1u << lane);
-  }
-  return lanes;
+// The 4 lanes of the quad whose top-left pixel is bit (ly * 8 + lx) of a cell mask.
+inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
+  const int bit = ly * kCellSizePx + lx;
+  return static_cast<uint32_t>(((m >> bit) & 3u) | (((m >> (bit + kCellSizePx)) & 3u) << 2));
 }
 
-struct TriangleContext {
-  const RenderPassDesc& pass;
-  const SubpassDesc& subpass;
-  const DrawCall& draw;
-  const BinnedTriangle& tri;
-  const float* varyings;  // 3 * varying_count, setup slot order
-  int varying_count;
-  const SamplePattern& pattern;
-  const TileRect& rect;
-  const TileFetch* fetch;
-  uint32_t triangle_ref;
-  std::vector<FragmentAccess>* fragments;  // null unless recording for the IMR model
+// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s).
+inline QuadCoverage spread_lanes(uint32_t lanes, int s) {
+  QuadCoverage c = 0;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if ((lanes >> lane) & 1u) c |= QuadCoverage{1} << (lane * kMaxSamples + s);
+  }
+  return c;
+}
+
+// Scratch reused by every tile a thread runs (no allocation in the tile loop once warm).
+struct TileScratch {
+  HierarchicalDepth hiz;
+  std::vector<CellState> cells;
+  std::vector<float> cell_depth;  // per cell, per sample, 64 depths (row-major in the cell)
+  std::vector<int> touched;       // cells the current triangle covered
+  QuadBatcher batcher;
 };
 
-// Records, per covered pixel, which samples were covered and written and what was accessed.
-void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
-                      QuadCoverage written, bool depth_test, bool depth_write, bool write_color) {
-  const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
-    if (!covered) continue;
-    FragmentAccess f;
-    f.triangle_ref = ctx.triangle_ref;
-    f.x_px = static_cast<uint16_t>(qx + (lane & 1));
-    f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
-    f.covered_samples = covered;
-    f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
-    f.subpass = static_cast<uint8_t>(ctx.tri.subpass);
-    if (depth_test) f.flags |= kDepthRead;
-    if (f.written_samples && depth_write) f.flags |= kDepthWritten;
-    if (f.written_samples && write_color && !ctx.subpass.color_outputs.empty()) {
-      f.flags |= kColorWritten;
-      if (blend_reads) f.flags |= kColorRead;
-    }
-    ctx.fragments->push_back(f);
-  }
+TileScratch& tile_scratch() {
+  thread_local TileScratch scratch;
+  return scratch;
 }
 
-// Runs the fragment shader on one quad with varyings and depth interpolated at the given
-// offset inside each pixel (helper lanes get extrapolated values so derivatives exist).
-void shade_quad(const TriangleContext& ctx, int qx, int qy, uint8_t lane_mask, int32_t off_x,
-                int32_t off_y, int sample, QuadOutput& out) {
-  const TriangleSetup& t = ctx.tri.setup;
-  // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
-  // images never depend on stack contents.
-  for (size_t k = 0; k < ctx.subpass.color_outputs.size(); ++k) {
-    for (int lane = 0; lane < kQuadLanes; ++lane) out.color[k][lane] = glm::vec4(0.0f);
-  }
-  QuadFragment quad;
-  quad.x_px = qx;
-  quad.y_px = qy;
-  quad.lane_mask = lane_mask;
-  quad.sample = sample;
-  quad.front_facing = t.front_facing;
-  quad.primitive_id = ctx.tri.primitive_id;
-  quad.fetch = ctx.fetch;
-  const int n = ctx.varying_count;
-  const float* v0 = ctx.varyings;
-  const float* v1 = v0 + n;
-  const float* v2 = v1 + n;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    double bary[3];
-    screen_barycentrics(t, int64_t{qx + (lane & 1)} * kSubpixelScale + off_x,
-                        int64_t{qy + (lane >> 1)} * kSubpixelScale + off_y, bary);
-    quad.depth[lane] = interpolate_depth(t, bary);
-    float w[3];
-    perspective_weights(t, bary, w);
-    for (int k = 0; k < n; ++k) quad.varyings[k][lane] = w[0] * v0[k] + w[1] * v1[k] + w[2] * v2[k];
-  }
-  ctx.draw.fragment_shader->shade(quad, out);
+// The cells of a tile: cell (i, j) has its top-left pixel at (first_x + 8 i, first_y + 8 j).
+struct TileCells {
+  int first_x = 0, first_y = 0, cells_x = 0, cells_y = 0;
+  explicit TileCells(const TileRect& r)
+      : first_x(r.x0 & ~(kCellSizePx - 1)), first_y(r.y0 & ~(kCellSizePx - 1)),
+        cells_x((r.x0 + r.width - first_x + kCellSizePx - 1) / kCellSizePx),
+        cells_y((r.y0 + r.height - first_y + kCellSizePx - 1) / kCellSizePx) {}
+  int count() const { return cells_x * cells_y; }
+};
+
+// Stored depth of cell `cell` as rows for HierarchicalDepth::refresh.
+void refresh_hiz(HierarchicalDepth& hiz, const TileCells& cells, int cell, const TileRect& rect,
+                 TileMemory& memory) {
+  const int cx = cells.first_x + (cell % cells.cells_x) * kCellSizePx;
+  const int cy = cells.first_y + (cell / cells.cells_x) * kCellSizePx;
+  const int x0 = std::max(cx, rect.x0), x1 = std::min(cx + kCellSizePx, rect.x0 + rect.width);
+  const int y0 = std::max(cy, rect.y0), y1 = std::min(cy + kCellSizePx, rect.y0 + rect.height);
+  const float* first = memory.depth_plane() + memory.index(x0 - rect.x0, y0 - rect.y0, 0);
+  hiz.refresh(cell, first, memory.width() * memory.samples(), (x1 - x0) * memory.samples(), y1 - y0);
 }
 
-// Coverage bits of sample 0 in every lane; shifted left by s for sample s.
-constexpr QuadCoverage kSampleBits = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
-                                     (1u << (3 * kMaxSamples));
-
-void shade_and_write_quad(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
-                          TileMemory& memory, TileCounters& counters) {
+// Coverage, hierarchical Z and (for early-Z draws) the depth test and write of every cell the
+// triangle touches in this tile; fills scratch.cells for the quad pass.
+void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
+                     TileCounters& counters, TileScratch& scratch) {
   const TriangleSetup& t = ctx.tri.setup;
-  const DrawCall& draw = ctx.draw;
-  const bool has_depth = ctx.pass.depth_index >= 0;
-  const bool depth_test = has_depth && draw.raster.depth_test;
-  const bool depth_write = has_depth && draw.raster.depth_write && !ctx.subpass.depth_read_only;
-  const bool late_z = draw.fragment_shader && draw.fragment_shader->may_discard();
+  const TileRect& rect = ctx.rect;
   const int samples = ctx.pattern.count;
-  float* depth_plane = memory.depth_plane();
-  // A fixed-point depth attachment (D16, D24S8) converts the fragment's depth to its format
-  // before the depth test (Vulkan 1.3 "Depth Test", Fixed-Point Data Conversions): tile memory
-  // keeps floats, so the incoming depth is quantised here and the quantised value is tested
-  // and written. D32F keeps the float as it is.
-  const PixelFormat depth_format = has_depth ? ctx.pass.attachments[ctx.pass.depth_index].format
-                                             : PixelFormat::D32_FLOAT;
-  const int depth_unorm_bits = depth_format == PixelFormat::D16_UNORM ? 16
-                               : depth_format == PixelFormat::D24S8   ? 24
-                                                                      : 0;
-
-  // Depth at every covered sample, tested against tile memory.
-  float sample_depth[kQuadLanes][kMaxSamples];
-  QuadCoverage passing = coverage;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!lane_coverage(coverage, lane)) continue;
-    const int64_t px = int64_t{qx + (lane & 1)} * kSubpixelScale;
-    const int64_t py = int64_t{qy + (lane >> 1)} * kSubpixelScale;
-    for (int s = 0; s < samples; ++s) {
-      const int bit = lane * kMaxSamples + s;
-      if (!((coverage >> bit) & 1u)) continue;
-      double bary[3];
-      screen_barycentrics(t, px + ctx.pattern.x[s], py + ctx.pattern.y[s], bary);
-      sample_depth[lane][s] = interpolate_depth(t, bary);
-      if (depth_unorm_bits) {
-        sample_depth[lane][s] = unorm_to_float(float_to_unorm(sample_depth[lane][s], depth_unorm_bits),
-                                               depth_unorm_bits);
-      }
-      if (depth_test) {
-        const size_t i = memory.index(qx + (lane & 1) - ctx.rect.x0, qy + (lane >> 1) - ctx.rect.y0, s);
-        if (!depth_compare_passes(draw.raster.depth_compare, sample_depth[lane][s], depth_plane[i])) {
-          passing &= ~(QuadCoverage{1} << bit);
+  const TrianglePlanes planes(t);
+  const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
+  const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
+  const int ci0 = (std::max(rect.x0, t.min_x) - cells.first_x) / kCellSizePx;
+  const int cj0 = (std::max(rect.y0, t.min_y) - cells.first_y) / kCellSizePx;
+  const int ci1 = (x_end - 1 - cells.first_x) / kCellSizePx;
+  const int cj1 = (y_end - 1 - cells.first_y) / kCellSizePx;
+  for (int cj = cj0; cj <= cj1; ++cj) {
+    for (int ci = ci0; ci <= ci1; ++ci) {
+      const int cell = cj * cells.cells_x + ci;
+      const int cx = cells.first_x + ci * kCellSizePx, cy = cells.first_y + cj * kCellSizePx;
+      CellState& st = scratch.cells[cell];
+      const CellMask valid = cell_rect_mask(cx, cy, rect.x0, rect.y0, x_end, y_end);
+      st.covered_any = cell_coverage(t, ctx.pattern, cx, cy, valid, st.covered);
+      if (!st.covered_any) continue;
+      scratch.touched.push_back(cell);
+      ++counters.cells_rasterized;
+      planes.at_cell(cx, cy, st.planes);
+      if (ctx.hiz_enabled) {
+        double lo, hi;
+        planes.depth_bounds(cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
+                            std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), lo, hi);
+        if (scratch.hiz.rejects(cell, ctx.draw.raster.depth_compare, ctx.quantize_depth(lo),
+                                ctx.quantize_depth(hi))) {
+          ++counters.cells_hiz_rejected;
+          for (int s = 0; s < samples; ++s) st.passing[s] = 0;
+          st.hiz_rejected = true;
+          if (!ctx.fragments) {  // nothing to record: count the cell's pixels and skip its quads
+            counters.fragments_depth_rejected += std::popcount(st.covered_any);
+            st.covered_any = 0;
+          }
+          continue;
         }
       }
-    }
-  }
-  const uint8_t covered_lanes = lanes_of(coverage);
-  if (!late_z) {
-    counters.fragments_depth_rejected += std::popcount(static_cast<unsigned>(covered_lanes & ~lanes_of(passing)));
-    if (!passing) {
-      if (ctx.fragments) record_fragments(ctx, qx, qy, coverage, 0, depth_test, depth_write, false);
-      return;
-    }
-  }
-
-  // Shading: once per pixel at the centre, or once per sample at the sample position when the
-  // shader asks (Vulkan sample shading). Each invocation's discards remove only its samples.
-  const bool per_sample = draw.fragment_shader && draw.fragment_shader->per_sample_shading();
-  const int invocations = per_sample ? samples : 1;
-  QuadOutput outputs_by_sample[kMaxSamples];
-  if (draw.fragment_shader) {
-    for (int inv = 0; inv < invocations; ++inv) {
-      const QuadCoverage sample_bits = per_sample ? kSampleBits << inv : ~QuadCoverage{0};
-      const uint8_t lanes = lanes_of((late_z ? coverage : passing) & sample_bits);
-      if (!lanes) continue;
-      QuadOutput& out = outputs_by_sample[inv];
-      const int32_t off_x = per_sample ? ctx.pattern.x[inv] : kSubpixelScale / 2;
-      const int32_t off_y = per_sample ? ctx.pattern.y[inv] : kSubpixelScale / 2;
-      shade_quad(ctx, qx, qy, lanes, off_x, off_y, per_sample ? inv : -1, out);
-      counters.fragments_shaded += std::popcount(static_cast<unsigned>(lanes));
-      for (int lane = 0; lane < kQuadLanes; ++lane) {
-        if ((out.discard_mask >> lane) & 1u) {
-          const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
-          passing &= ~lane_bits;
-          coverage &= ~lane_bits;
+      st.hiz_rejected = false;
+      // Depth at every sample position, then the depth test (and, for early Z, the write).
+      const int cols = std::min(cx + kCellSizePx, rect.x0 + rect.width) - std::max(cx, rect.x0);
+      const int rows = std::min(cy + kCellSizePx, rect.y0 + rect.height) - std::max(cy, rect.y0);
+      float* z_all = scratch.cell_depth.data() + static_cast<size_t>(cell) * kMaxSamples * kCellPixels;
+      bool wrote = false;
+      for (int s = 0; s < samples; ++s) {
+        float* z = z_all + s * kCellPixels;
+        if (!st.covered[s]) {
+          st.passing[s] = 0;
+          continue;
         }
-      }
-    }
-    if (late_z) {
-      counters.fragments_depth_rejected +=
-          std::popcount(static_cast<unsigned>(lanes_of(coverage) & ~lanes_of(passing)));
-    }
-  }
-
-  const std::vector<int>& outputs = ctx.subpass.color_outputs;
-  const bool write_color = draw.fragment_shader != nullptr;
-  if (ctx.fragments) record_fragments(ctx, qx, qy, coverage, passing, depth_test, depth_write, write_color);
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    const unsigned lane_bits = lane_coverage(passing, lane);
-    if (!lane_bits) continue;
-    for (int s = 0; s < samples; ++s) {
-      if (!((lane_bits >> s) & 1u)) continue;
-      const size_t i = memory.index(qx + (lane & 1) - ctx.rect.x0, qy + (lane >> 1) - ctx.rect.y0, s);
-      if (depth_write) depth_plane[i] = sample_depth[lane][s];
-      if (write_color) {
-        const QuadOutput& out = outputs_by_sample[per_sample ? s : 0];
-        for (size_t k = 0; k < outputs.size(); ++k) {
-          const int a = outputs[k];
-          glm::vec4& dst = memory.color_plane(a)[i];
-          dst = quantize_pixel(ctx.pass.attachments[a].format,
-                               blend_color(draw.blend, out.color[k][lane], dst));
+        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z);
+        if (ctx.depth_unorm_bits) {
+          for (int i = 0; i < kCellPixels; ++i) z[i] = ctx.quantize_depth(z[i]);
         }
+        if (!ctx.has_depth) {
+          st.passing[s] = st.covered[s];
+          continue;
+        }
+        // Cell-local pixel (lx, ly) of a cell cut by the tile's top/left edge never happens:
+        // tiles are aligned to their size, and a tile narrower than a cell starts the cut.
+        const int lx0 = std::max(cx, rect.x0) - cx, ly0 = std::max(cy, rect.y0) - cy;
+        float* stored = memory.depth_plane() + memory.index(cx + lx0 - rect.x0, cy + ly0 - rect.y0, s);
+        const int shift = ly0 * kCellSizePx + lx0;
+        const bool write_now = ctx.depth_write && !ctx.late_z;
+        if (samples == 1) {
+          st.passing[s] = depth_test_cell(ctx.draw.raster.depth_compare, ctx.depth_test, write_now,
+                                          z + shift, stored, memory.width(), cols, rows,
+                                          st.covered[s] >> shift) << shift;
+        } else {
+          CellMask pass = 0;
+          for (int ly = ly0; ly < ly0 + rows; ++ly) {
+            for (int lx = lx0; lx < lx0 + cols; ++lx) {
+              const int bit = ly * kCellSizePx + lx;
+              if (!((st.covered[s] >> bit) & 1u)) continue;
+              float& dst = memory.depth_plane()[memory.index(cx + lx - rect.x0, cy + ly - rect.y0, s)];
+              if (ctx.depth_test && !depth_compare_passes(ctx.draw.raster.depth_compare, z[bit], dst)) continue;
+              pass |= CellMask{1} << bit;
+              if (write_now) dst = z[bit];
+            }
+          }
+          st.passing[s] = pass;
+        }
+        wrote = wrote || (write_now && st.passing[s]);
       }
-      ++counters.samples_written;
+      if (wrote && ctx.hiz_tracked) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
     }
   }
+}
+
+// Walks the triangle's quads in the tile's row-major order (the order the texture and IMR
+// models replay) and hands the surviving ones to the batcher.
+void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
+                 TileCounters& counters, TileScratch& scratch) {
+  const TriangleSetup& t = ctx.tri.setup;
+  const TileRect& rect = ctx.rect;
+  const int samples = ctx.pattern.count;
+  const int x_begin = std::max(rect.x0, t.min_x & ~1);
+  const int y_begin = std::max(rect.y0, t.min_y & ~1);
+  const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
+  const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
+  QuadBatcher& batcher = scratch.batcher;
+  batcher.begin(ctx, memory, counters, scratch.cells.data(), cells.cells_x, cells.first_x,
+                cells.first_y, scratch.cell_depth.data());
+  for (int qy = y_begin; qy < y_end; qy += 2) {
+    const int cj = (qy - cells.first_y) / kCellSizePx;
+    const int ly = qy & (kCellSizePx - 1);
+    for (int qx = x_begin; qx < x_end; qx += 2) {
+      const int cell = cj * cells.cells_x + (qx - cells.first_x) / kCellSizePx;
+      const CellState& st = scratch.cells[cell];
+      const int lx = qx & (kCellSizePx - 1);
+      if (!quad_lanes(st.covered_any, lx, ly)) continue;
+      QuadCoverage coverage = 0, passing = 0;
+      for (int s = 0; s < samples; ++s) {
+        coverage |= spread_lanes(quad_lanes(st.covered[s], lx, ly), s);
+        passing |= spread_lanes(quad_lanes(st.passing[s], lx, ly), s);
+      }
+      if (!ctx.late_z) {
+        counters.fragments_depth_rejected +=
+            std::popcount(static_cast<unsigned>(lanes_of(coverage) & ~lanes_of(passing)));
+        // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
+        if (!passing && !ctx.fragments) continue;
+      }
+      batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
+    }
+  }
+  batcher.flush();
 }
 
 }  // namespace
@@ -246,8 +240,16 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   const uint32_t end = params.tile_offsets[tile_index + 1];
   if (begin != end) ++counters.tiles_executed;
 
+  TileScratch& scratch = tile_scratch();
+  const TileCells cells(rect);
+  scratch.cells.resize(cells.count());
+  scratch.cell_depth.resize(static_cast<size_t>(cells.count()) * kMaxSamples * kCellPixels);
+  const bool has_depth = pass.depth_index >= 0;
+  if (has_depth && begin != end) {
+    scratch.hiz.prepare(cells.cells_x, cells.cells_y);
+    for (int c = 0; c < cells.count(); ++c) refresh_hiz(scratch.hiz, cells, c, rect, memory);
+  }
   const SamplePattern& pattern = *standard_sample_pattern(pass.samples);
-  const PixelRect pixel_rect{rect.x0, rect.y0, rect.x0 + rect.width, rect.y0 + rect.height};
   for (uint32_t e = begin; e < end; ++e) {
     const uint32_t ref = params.tile_entries[e];
     const BinnedTriangle& tri = params.triangle(ref);
@@ -257,11 +259,18 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
     const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
-    const TriangleContext ctx{pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
-                              rect, &fetch, ref, record_fragment_accesses ? &trace.fragments : nullptr};
-    rasterize_quads(tri.setup, pattern, pixel_rect, [&](int qx, int qy, QuadCoverage coverage) {
-      shade_and_write_quad(ctx, qx, qy, coverage, memory, counters);
-    });
+    const TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
+                              rect, &fetch, ref,
+                              record_fragment_accesses ? &trace.fragments : nullptr);
+    scratch.touched.clear();
+    rasterize_cells(ctx, cells, memory, counters, scratch);
+    if (scratch.touched.empty()) continue;
+    shade_quads(ctx, cells, memory, counters, scratch);
+    // Late-Z draws wrote depth after shading: bring their cells' bounds up to date.
+    if (ctx.late_z && ctx.depth_write && ctx.hiz_tracked) {
+      for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
+    }
+    for (int cell : scratch.touched) scratch.cells[cell].covered_any = 0;
   }
   store_tile(pass, rect, memory);
 }

@@ -1,0 +1,347 @@
+// Cell rasterization kernels (see cell_raster.h), compiled once per SIMD target by Highway's
+// foreach_target and chosen at run time. Every kernel uses only IEEE add, multiply, divide and
+// compare, never fused multiply-add, so each target produces the same bits.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/cell_raster.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "raster/cell_raster.h"
+#include "util/error.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Pixel column / row of each bit of a cell mask.
+alignas(64) constexpr int32_t kCellLx[kCellPixels] = {
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7,
+    0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7};
+alignas(64) constexpr int32_t kCellLy[kCellPixels] = {
+    0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3,
+    4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7, 7, 7, 7, 7};
+
+// Lane mask bits of a vector as an integer (lane i -> bit i).
+template <class D, class M>
+uint64_t mask_bits(D d, M m) {
+  uint8_t bytes[8] = {};
+  hn::StoreMaskBits(d, m, bytes);
+  uint64_t bits = 0;
+  std::memcpy(&bits, bytes, sizeof(bits));
+  const size_t n = hn::Lanes(d);
+  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
+}
+
+// Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < edges. The caller
+// guarantees every partial sum fits int32.
+uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, int edges) {
+  const hn::ScalableTag<int32_t> d;
+  const size_t n = hn::Lanes(d);
+  uint64_t bits = 0;
+  for (size_t i = 0; i < kCellPixels; i += n) {
+    const auto lx = hn::Load(d, kCellLx + i);
+    const auto ly = hn::Load(d, kCellLy + i);
+    // The sign bit of the OR is set iff some edge value is negative.
+    auto any_negative = hn::Zero(d);
+    for (int k = 0; k < edges; ++k) {
+      const auto e = hn::Add(hn::Add(hn::Set(d, e0[k]), hn::Mul(hn::Set(d, a[k]), lx)),
+                             hn::Mul(hn::Set(d, b[k]), ly));
+      any_negative = hn::Or(any_negative, e);
+    }
+    bits |= mask_bits(d, hn::Gt(any_negative, hn::Set(d, -1))) << i;
+  }
+  return bits;
+}
+
+// z = clamp(origin + dx * fx + dy * fy, 0, 1) at every pixel of a cell, the sample offset folded
+// into fx, fy. The clamp is compare-and-select so NaN is handled alike on every target.
+void CellDepthKernel(float origin, float dx, float dy, float off_x, float off_y, float* out) {
+  const hn::ScalableTag<float> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const size_t n = hn::Lanes(d);
+  const auto zero = hn::Zero(d);
+  const auto one = hn::Set(d, 1.0f);
+  for (size_t i = 0; i < kCellPixels; i += n) {
+    const auto fx = hn::Add(hn::ConvertTo(d, hn::Load(di, kCellLx + i)), hn::Set(d, off_x));
+    const auto fy = hn::Add(hn::ConvertTo(d, hn::Load(di, kCellLy + i)), hn::Set(d, off_y));
+    auto z = hn::Add(hn::Add(hn::Set(d, origin), hn::Mul(hn::Set(d, dx), fx)),
+                     hn::Mul(hn::Set(d, dy), fy));
+    z = hn::IfThenElse(hn::Lt(z, zero), zero, z);
+    z = hn::IfThenElse(hn::Gt(z, one), one, z);
+    hn::StoreU(z, d, out + i);
+  }
+}
+
+void InterpolateKernel(const InterpolationInput& in, int count, float* depth_out,
+                       float* varyings_out, int stride) {
+  const hn::ScalableTag<float> d;
+  const size_t n = hn::Lanes(d);
+  const auto zero = hn::Zero(d);
+  const auto one = hn::Set(d, 1.0f);
+  for (size_t i = 0; i < static_cast<size_t>(count); i += n) {
+    const auto fx = hn::LoadU(d, in.fx + i);
+    const auto fy = hn::LoadU(d, in.fy + i);
+    const auto l1 = hn::Add(hn::Add(hn::LoadU(d, in.l1_origin + i), hn::Mul(hn::Set(d, in.l1_dx), fx)),
+                            hn::Mul(hn::Set(d, in.l1_dy), fy));
+    const auto l2 = hn::Add(hn::Add(hn::LoadU(d, in.l2_origin + i), hn::Mul(hn::Set(d, in.l2_dx), fx)),
+                            hn::Mul(hn::Set(d, in.l2_dy), fy));
+    auto z = hn::Add(hn::Add(hn::LoadU(d, in.z_origin + i), hn::Mul(hn::Set(d, in.z_dx), fx)),
+                     hn::Mul(hn::Set(d, in.z_dy), fy));
+    z = hn::IfThenElse(hn::Lt(z, zero), zero, z);
+    z = hn::IfThenElse(hn::Gt(z, one), one, z);
+    hn::StoreU(z, d, depth_out + i);
+    const auto l0 = hn::Sub(hn::Sub(one, l1), l2);
+    // Perspective correction: lambda_i / w_i, normalised (the reciprocal is a true division).
+    const auto q0 = hn::Mul(l0, hn::Set(d, in.inv_w[0]));
+    const auto q1 = hn::Mul(l1, hn::Set(d, in.inv_w[1]));
+    const auto q2 = hn::Mul(l2, hn::Set(d, in.inv_w[2]));
+    const auto inv_sum = hn::Div(one, hn::Add(hn::Add(q0, q1), q2));
+    const auto w1 = hn::Mul(q1, inv_sum);
+    const auto w2 = hn::Mul(q2, inv_sum);
+    // v0 + w1 (v1 - v0) + w2 (v2 - v0): a varying equal at the three vertices (a flat
+    // attribute, a material id) comes out exactly, whatever the rounding of the weights.
+    for (int k = 0; k < in.varying_count; ++k) {
+      const float v0 = in.vertex_varyings[0][k];
+      const auto v = hn::Add(hn::Add(hn::Set(d, v0), hn::Mul(w1, hn::Set(d, in.vertex_varyings[1][k] - v0))),
+                             hn::Mul(w2, hn::Set(d, in.vertex_varyings[2][k] - v0)));
+      hn::StoreU(v, d, varyings_out + static_cast<size_t>(k) * stride + i);
+    }
+  }
+}
+
+template <class D, class V>
+auto compare(D d, CompareOp op, V incoming, V stored) {
+  switch (op) {
+    case CompareOp::Never: return hn::FirstN(d, 0);
+    case CompareOp::Less: return hn::Lt(incoming, stored);
+    case CompareOp::LessEqual: return hn::Le(incoming, stored);
+    case CompareOp::Equal: return hn::Eq(incoming, stored);
+    case CompareOp::Greater: return hn::Gt(incoming, stored);
+    case CompareOp::GreaterEqual: return hn::Ge(incoming, stored);
+    case CompareOp::NotEqual: return hn::Not(hn::Eq(incoming, stored));
+    case CompareOp::Always: break;
+  }
+  return hn::FirstN(d, hn::Lanes(d));
+}
+
+CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, float* stored,
+                         int stride, int cols, int rows, CellMask candidates) {
+  const hn::CappedTag<float, kCellSizePx> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const size_t n = hn::Lanes(d);
+  CellMask passing = 0;
+  if (cols != kCellSizePx) {  // a cell cut by a narrow tile or the target's edge: scalar
+    for (int ly = 0; ly < rows; ++ly) {
+      for (int lx = 0; lx < cols; ++lx) {
+        const int bit = ly * kCellSizePx + lx;
+        if (!((candidates >> bit) & 1u)) continue;
+        float& dst = stored[ly * stride + lx];
+        if (test && !depth_compare_passes(op, z[bit], dst)) continue;
+        passing |= CellMask{1} << bit;
+        if (write) dst = z[bit];
+      }
+    }
+    return passing;
+  }
+  alignas(64) static constexpr int32_t kLaneBit[kCellSizePx] = {1, 2, 4, 8, 16, 32, 64, 128};
+  for (int ly = 0; ly < rows; ++ly) {
+    const uint32_t row_bits = static_cast<uint32_t>(candidates >> (ly * kCellSizePx)) & 0xFFu;
+    if (!row_bits) continue;
+    for (size_t x = 0; x < kCellSizePx; x += n) {
+      const auto lane_bits = hn::Load(di, kLaneBit + x);
+      const auto covered = hn::RebindMask(
+          d, hn::Ne(hn::And(hn::Set(di, static_cast<int32_t>(row_bits)), lane_bits), hn::Zero(di)));
+      float* row = stored + ly * stride + x;
+      const auto incoming = hn::LoadU(d, z + ly * kCellSizePx + x);
+      const auto old = hn::LoadU(d, row);
+      const auto pass = test ? hn::And(covered, compare(d, op, incoming, old)) : covered;
+      passing |= mask_bits(d, pass) << (ly * kCellSizePx + x);
+      if (write) hn::StoreU(hn::IfThenElse(pass, incoming, old), d, row);
+    }
+  }
+  return passing;
+}
+
+const char* TargetNameKernel() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile {
+
+HWY_EXPORT(CoverageKernel);
+HWY_EXPORT(CellDepthKernel);
+HWY_EXPORT(InterpolateKernel);
+HWY_EXPORT(DepthTestKernel);
+HWY_EXPORT(TargetNameKernel);
+
+namespace {
+
+// Edge span over a cell: sample positions lie within [0, 8 * 256 - 1] subpixels of its corner.
+constexpr int64_t kCellSpanSubpx = kCellSizePx * kSubpixelScale - 1;
+// An edge crossing a cell has |E| <= (|a| + |b|) * 2 * kCellSpanSubpx there, which fits int32
+// when |a| + |b| <= 2^19 (edges shorter than 2048 px along each axis).
+constexpr int64_t kMaxInt32EdgeSlope = int64_t{1} << 19;
+
+// The 64-bit path for edges too steep for int32 lanes: the scalar edge functions as they are.
+CellMask coverage_int64(const EdgeFunction* const* edges, int count, int64_t px0, int64_t py0,
+                        int32_t sx, int32_t sy) {
+  CellMask bits = 0;
+  for (int bit = 0; bit < kCellPixels; ++bit) {
+    const int64_t px = px0 + (bit % kCellSizePx) * kSubpixelScale + sx;
+    const int64_t py = py0 + (bit / kCellSizePx) * kSubpixelScale + sy;
+    bool inside = true;
+    for (int k = 0; k < count && inside; ++k) inside = edges[k]->at(px, py) + edges[k]->bias >= 0;
+    if (inside) bits |= CellMask{1} << bit;
+  }
+  return bits;
+}
+
+}  // namespace
+
+CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1) {
+  const int lx0 = std::max(x0 - cell_x0, 0), lx1 = std::min(x1 - cell_x0, kCellSizePx);
+  const int ly0 = std::max(y0 - cell_y0, 0), ly1 = std::min(y1 - cell_y0, kCellSizePx);
+  if (lx0 >= lx1 || ly0 >= ly1) return 0;
+  const uint64_t row = ((uint64_t{1} << (lx1 - lx0)) - 1) << lx0;
+  CellMask mask = 0;
+  for (int ly = ly0; ly < ly1; ++ly) mask |= row << (ly * kCellSizePx);
+  return mask;
+}
+
+CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+                       int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
+  for (int s = 0; s < pattern.count; ++s) out[s] = 0;
+  if (!valid) return 0;
+  const int64_t px0 = int64_t{cell_x0} * kSubpixelScale;
+  const int64_t py0 = int64_t{cell_y0} * kSubpixelScale;
+  // Trivial reject / accept from each edge's extreme values over the cell.
+  const EdgeFunction* partial[3];
+  int64_t corner[3];
+  int partial_count = 0;
+  bool int32_ok = true;
+  for (const EdgeFunction& e : t.edge) {
+    const int64_t at_corner = e.at(px0, py0) + e.bias;
+    const int64_t lo = at_corner + std::min<int64_t>(e.a, 0) * kCellSpanSubpx +
+                       std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
+    const int64_t hi = at_corner + std::max<int64_t>(e.a, 0) * kCellSpanSubpx +
+                       std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
+    if (hi < 0) return 0;
+    if (lo >= 0) continue;
+    corner[partial_count] = at_corner;
+    partial[partial_count++] = &e;
+    int32_ok = int32_ok && std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
+  }
+  CellMask any = 0;
+  for (int s = 0; s < pattern.count; ++s) {
+    CellMask bits = ~CellMask{0};
+    if (partial_count > 0 && int32_ok) {
+      int32_t e0[3], a[3], b[3];
+      for (int k = 0; k < partial_count; ++k) {
+        e0[k] = static_cast<int32_t>(corner[k] + partial[k]->a * pattern.x[s] + partial[k]->b * pattern.y[s]);
+        a[k] = static_cast<int32_t>(partial[k]->a * kSubpixelScale);
+        b[k] = static_cast<int32_t>(partial[k]->b * kSubpixelScale);
+      }
+      bits = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, a, b, partial_count);
+    } else if (partial_count > 0) {
+      bits = coverage_int64(partial, partial_count, px0, py0, pattern.x[s], pattern.y[s]);
+    }
+    out[s] = bits & valid;
+    any |= out[s];
+  }
+  return any;
+}
+
+TrianglePlanes::TrianglePlanes(const TriangleSetup& t) : t_(t) {
+  const double per_px = static_cast<double>(kSubpixelScale) * t.inv_area2;
+  l1_dx_ = static_cast<double>(t.edge[1].a) * per_px;
+  l1_dy_ = static_cast<double>(t.edge[1].b) * per_px;
+  l2_dx_ = static_cast<double>(t.edge[2].a) * per_px;
+  l2_dy_ = static_cast<double>(t.edge[2].b) * per_px;
+  const double dz1 = static_cast<double>(t.depth[1]) - t.depth[0];
+  const double dz2 = static_cast<double>(t.depth[2]) - t.depth[0];
+  z_dx_ = l1_dx_ * dz1 + l2_dx_ * dz2;
+  z_dy_ = l1_dy_ * dz1 + l2_dy_ * dz2;
+}
+
+void TrianglePlanes::at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const {
+  const int64_t px = int64_t{cell_x0} * kSubpixelScale + kSubpixelScale / 2;
+  const int64_t py = int64_t{cell_y0} * kSubpixelScale + kSubpixelScale / 2;
+  const double l1 = static_cast<double>(t_.edge[1].at(px, py)) * t_.inv_area2;
+  const double l2 = static_cast<double>(t_.edge[2].at(px, py)) * t_.inv_area2;
+  const double z = t_.depth[0] + l1 * (static_cast<double>(t_.depth[1]) - t_.depth[0]) +
+                   l2 * (static_cast<double>(t_.depth[2]) - t_.depth[0]);
+  out[0] = {static_cast<float>(l1), static_cast<float>(l1_dx_), static_cast<float>(l1_dy_)};
+  out[1] = {static_cast<float>(l2), static_cast<float>(l2_dx_), static_cast<float>(l2_dy_)};
+  out[2] = {static_cast<float>(z), static_cast<float>(z_dx_), static_cast<float>(z_dy_)};
+}
+
+void TrianglePlanes::depth_bounds(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1,
+                                  double& min_out, double& max_out) const {
+  CellPlane p[3];
+  at_cell(cell_x0, cell_y0, p);
+  const CellPlane& z = p[2];
+  // Sample offsets from the top-left pixel centre span [x0 - cell_x0 - 0.5, x1 - cell_x0 - 0.5].
+  const double fx_lo = x0 - cell_x0 - 0.5, fx_hi = x1 - cell_x0 - 0.5;
+  const double fy_lo = y0 - cell_y0 - 0.5, fy_hi = y1 - cell_y0 - 0.5;
+  const double zx_lo = std::min(z.dx * fx_lo, z.dx * fx_hi), zx_hi = std::max(z.dx * fx_lo, z.dx * fx_hi);
+  const double zy_lo = std::min(z.dy * fy_lo, z.dy * fy_hi), zy_hi = std::max(z.dy * fy_lo, z.dy * fy_hi);
+  // The float evaluation fl(fl(o + fl(dx fx)) + fl(dy fy)) of the float-rounded plane differs
+  // from this (exactly evaluated) float plane by at most 3 roundings of the largest partial
+  // magnitude; 8 units of 2^-24 is a safe margin (docs/rasterization.md).
+  const double magnitude = std::abs(static_cast<double>(z.origin)) +
+                           std::abs(static_cast<double>(z.dx)) * kCellSizePx +
+                           std::abs(static_cast<double>(z.dy)) * kCellSizePx;
+  const double margin = magnitude * 8.0 * 0x1p-24 + 0x1p-126;
+  min_out = z.origin + zx_lo + zy_lo - margin;
+  max_out = z.origin + zx_hi + zy_hi + margin;
+}
+
+void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels]) {
+  const float off_x = static_cast<float>(sx - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
+  const float off_y = static_cast<float>(sy - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
+  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, off_x, off_y, out);
+}
+
+void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
+                           float* varyings_out, int varyings_stride) {
+  HWY_DYNAMIC_DISPATCH(InterpolateKernel)(in, count, depth_out, varyings_out, varyings_stride);
+}
+
+CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
+                         float* stored, int stride, int cols, int rows, CellMask candidates) {
+  return HWY_DYNAMIC_DISPATCH(DepthTestKernel)(op, test, write, z, stored, stride, cols, rows,
+                                               candidates);
+}
+
+const char* active_simd_target() { return HWY_DYNAMIC_DISPATCH(TargetNameKernel)(); }
+
+std::vector<std::string> simd_targets() {
+  std::vector<std::string> names;
+  // SupportedAndGeneratedTargets lists lowest bit first, which is the best target on x86.
+  for (int64_t target : hwy::SupportedAndGeneratedTargets()) names.push_back(hwy::TargetName(target));
+  return names;
+}
+
+void force_simd_target(const std::string& name) {
+  hwy::SetSupportedTargetsForTest(0);
+  if (name.empty()) return;
+  for (int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    if (name == hwy::TargetName(target)) {
+      hwy::SetSupportedTargetsForTest(target);
+      return;
+    }
+  }
+  std::string known;
+  for (const std::string& n : simd_targets()) known += (known.empty() ? "" : ", ") + n;
+  throw Error("unknown SIMD target '" + name + "' (this machine: " + known + ")");
+}
+
+}  // namespace ontile
+#endif  // HWY_ONCE

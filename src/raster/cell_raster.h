@@ -1,0 +1,98 @@
+// Hierarchical rasterization in 8x8-pixel screen cells (as llvmpipe and Larrabee do): each
+// edge is trivially accepted or rejected for a whole cell from its corner values, and only the
+// cells an edge crosses are evaluated per sample, on SIMD lanes (Highway, runtime dispatch) in
+// 32-bit fixed point when the edge's slope allows it, 64-bit otherwise. Also the float plane
+// equations (barycentrics, depth) the interpolation evaluates, anchored at each cell's origin.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "raster/sample_pattern.h"
+#include "raster/triangle_setup.h"
+
+namespace ontile {
+
+// Cells are aligned to multiples of 8 pixels in render-target space, whatever the tile size,
+// so every value computed from a cell's origin is the same in every pass and tile grid.
+constexpr int kCellSizePx = 8;
+constexpr int kCellPixels = kCellSizePx * kCellSizePx;
+
+// Bit (ly * 8 + lx) of a cell mask is pixel (cell_x0 + lx, cell_y0 + ly).
+using CellMask = uint64_t;
+
+// The pixels of the cell at (cell_x0, cell_y0) inside the rectangle [x0, x1) x [y0, y1).
+CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1);
+
+// Coverage of the cell at (cell_x0, cell_y0), restricted to `valid` pixels: out[s] gets the
+// pixels whose sample s is inside (top-left rule included). Returns the union over samples.
+// Bit-exact with the scalar edge functions: this is integer arithmetic on every path.
+CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+                       int cell_y0, CellMask valid, CellMask out[kMaxSamples]);
+
+// An affine function of the pixel position, v(x, y) = origin + dx * (x - cell_x0) +
+// dy * (y - cell_y0) with x, y at pixel-centre offsets, in float.
+struct CellPlane {
+  float origin = 0.0f, dx = 0.0f, dy = 0.0f;
+};
+
+// The screen-space barycentrics of vertices 1 and 2 and the depth (z/w) as plane equations of
+// one triangle, exact in double and rounded to float per cell.
+class TrianglePlanes {
+ public:
+  explicit TrianglePlanes(const TriangleSetup& t);
+  // Planes anchored at the centre of the cell's top-left pixel: [0] lambda1, [1] lambda2,
+  // [2] depth.
+  void at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const;
+  // Bounds of the exact depth over the cell's sample area (pixel rect [x0, x1) x [y0, y1) in the
+  // cell) widened by the float evaluation's error bound (docs/rasterization.md), so every depth
+  // interpolate_cell_depth() returns for that area lies in [min_out, max_out] before clamping.
+  void depth_bounds(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1, double& min_out,
+                    double& max_out) const;
+
+ private:
+  const TriangleSetup& t_;
+  double l1_dx_, l1_dy_, l2_dx_, l2_dy_, z_dx_, z_dy_;  // per pixel
+};
+
+// Depth of the plane at every pixel of a cell, at sample offset (sx, sy) in 1/256 px from the
+// pixel's top-left corner, clamped to [0, 1] (Vulkan clamps before the depth test): out[64],
+// row-major. Same bits on every SIMD target (no FMA, IEEE operations only).
+void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels]);
+
+// Perspective-correct interpolation for `count` fragments (a multiple of 16): fragment f sits at
+// offset (fx[f], fy[f]) pixels from its cell's top-left pixel centre and uses that cell's planes
+// (l1, l2, z per fragment). Writes depth[f] (clamped to [0, 1]) and, for each varying k,
+// out_varyings[k * stride + f] = v0[k] + w1 (v1[k] - v0[k]) + w2 (v2[k] - v0[k]) with w_i the
+// perspective weights (lambda_i / w_i normalised).
+struct InterpolationInput {
+  const float* fx;
+  const float* fy;
+  const float* l1_origin;
+  const float* l2_origin;
+  const float* z_origin;
+  float l1_dx, l1_dy, l2_dx, l2_dy, z_dx, z_dy;
+  float inv_w[3];
+  const float* vertex_varyings[3];  // varying_count floats per vertex, setup slot order
+  int varying_count;
+};
+void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
+                           float* varyings_out, int varyings_stride);
+
+// Depth test of the covered pixels of one cell of single-sample tile memory whose rows are
+// `stride` floats apart: stored[(ly * stride) + lx] for the cell's `cols` x `rows` pixels.
+// Returns the candidates that pass `op` (all candidates when !test) and, when `write`, stores
+// their depth. The caller passes only candidates inside cols x rows.
+CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
+                         float* stored, int stride, int cols, int rows, CellMask candidates);
+
+// Name of the SIMD target the dispatched functions run on now (for reports and tests).
+const char* active_simd_target();
+// The SIMD targets compiled in and supported by this CPU, best first (e.g. AVX2, SSE4, SSSE3,
+// EMU128). force_simd_target(name) makes every kernel run on that target ("" = the best);
+// throws Error for a name not in the list. Used by tests (same bits on every target) and the
+// CLI's --simd option. Not thread-safe: call it between frames.
+std::vector<std::string> simd_targets();
+void force_simd_target(const std::string& name);
+
+}  // namespace ontile

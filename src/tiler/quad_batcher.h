@@ -1,0 +1,106 @@
+// The shading half of a tile's triangle: queues the triangle's covered quads in row-major
+// order, shades them in batches of up to 16 quads per functor call (structure-of-arrays
+// varyings interpolated on SIMD lanes), then applies discards, late depth, blending and the
+// attachment formats' quantisation, quad by quad in queue order.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "raster/cell_raster.h"
+#include "raster/pixel_format.h"
+#include "raster/rasterize.h"
+#include "raster/shader_interface.h"
+#include "tiler/parameter_buffer.h"
+#include "tiler/tile_load_store.h"
+#include "tiler/tile_memory.h"
+#include "tiler/tile_trace.h"
+
+namespace ontile {
+
+// Lanes with at least one covered sample.
+inline uint8_t lanes_of(QuadCoverage coverage) {
+  uint8_t lanes = 0;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (lane_coverage(coverage, lane)) lanes |= static_cast<uint8_t>(1u << lane);
+  }
+  return lanes;
+}
+
+// What one triangle of a tile needs to know about its draw, pass and state.
+struct TriangleContext {
+  const RenderPassDesc& pass;
+  const SubpassDesc& subpass;
+  const DrawCall& draw;
+  const BinnedTriangle& tri;
+  const float* varyings;  // 3 * varying_count, setup slot order
+  int varying_count;
+  const SamplePattern& pattern;
+  const TileRect& rect;
+  const FramebufferFetch* fetch;
+  uint32_t triangle_ref;
+  std::vector<FragmentAccess>* fragments;  // null unless recording for the IMR model
+
+  bool has_depth, depth_test, depth_write, late_z, per_sample, write_color;
+  // A fixed-point depth attachment (D16, D24S8) converts the fragment's depth to its format
+  // before the depth test (Vulkan 1.3 "Depth Test", Fixed-Point Data Conversions): tile memory
+  // keeps floats, so the incoming depth is quantised and the quantised value tested and written.
+  int depth_unorm_bits;
+  bool hiz_tracked;  // the pass has depth: cells keep their depth bounds
+  bool hiz_enabled;  // this draw may skip cells by hierarchical Z (early Z, ordering compare)
+
+  TriangleContext(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw,
+                  const BinnedTriangle& tri, const float* varyings, int varying_count,
+                  const SamplePattern& pattern, const TileRect& rect,
+                  const FramebufferFetch* fetch, uint32_t triangle_ref,
+                  std::vector<FragmentAccess>* fragments);
+  float quantize_depth(double z) const;
+};
+
+// Per-cell results of coverage and early depth for the current triangle.
+struct CellState {
+  CellMask covered_any = 0;
+  CellMask covered[kMaxSamples] = {};
+  CellMask passing[kMaxSamples] = {};
+  CellPlane planes[3];  // lambda1, lambda2, depth at the cell's origin
+  bool hiz_rejected = false;
+};
+
+struct QueuedQuad {
+  int qx, qy, cell;
+  QuadCoverage coverage, passing;
+};
+
+class QuadBatcher {
+ public:
+  QuadBatcher();
+  // Starts a triangle: cells and cell_depth are the tile's per-cell state (see tile_executor).
+  void begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
+             const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
+             const float* cell_depth);
+  void add(const QueuedQuad& quad) {
+    queue_[queued_++] = quad;
+    if (queued_ == kBatchQuads) flush();
+  }
+  void flush();
+
+ private:
+  void shade_invocation(int invocation);
+  void write_back(int q);
+
+  const TriangleContext* ctx_ = nullptr;
+  TileMemory* memory_ = nullptr;
+  TileCounters* counters_ = nullptr;
+  const CellState* cells_ = nullptr;
+  int cells_x_ = 0, first_cell_x_ = 0, first_cell_y_ = 0;
+  const float* cell_depth_ = nullptr;
+  QueuedQuad queue_[kBatchQuads];
+  int queued_ = 0;
+  int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1
+  std::unique_ptr<FragmentBatch> batch_;
+  std::unique_ptr<BatchOutput> outputs_[kMaxSamples];
+  // Interpolation inputs per batch fragment.
+  alignas(64) float fx_[kBatchFragments], fy_[kBatchFragments];
+  alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
+};
+
+}  // namespace ontile
