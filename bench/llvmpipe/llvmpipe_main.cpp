@@ -142,8 +142,8 @@ void run(const Options& o) {
   std::printf("scene: %s, %dx%d, %llu triangles, %zu draws, depth %s\n", o.scene.c_str(), w, h,
               static_cast<unsigned long long>(scene.drawn_triangle_count()), draws,
               clip_control ? "[0,1] (GL_EXT_clip_control)" : "[-1,1] (remapped projection)");
-  std::printf("frames: %d after 1 warm-up\nmedian_ms: %.3f\nmin_ms: %.3f\ncores_busy: %.2f\n", o.frames,
-              times.median_ms, times.min_ms, times.cores_busy);
+  std::printf("frames: %d after 1 warm-up\nmedian_ms: %.3f\nmin_ms: %.3f\ncpu_ms_per_frame: %.3f\ncores_busy: %.2f\n",
+              o.frames, times.median_ms, times.min_ms, times.cpu_ms_per_frame, times.cores_busy);
 
   if (!o.color.empty()) {
     std::vector<uint8_t> rgba(static_cast<size_t>(w) * h * 4);

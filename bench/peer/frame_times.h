@@ -9,9 +9,10 @@ namespace ontile::peer {
 
 struct FrameTimes {
   double median_ms = 0.0, min_ms = 0.0;
-  // CPU time of the whole process (all its threads) over the timed frames divided by their
-  // wall time: how many cores the renderer kept busy on average.
-  double cores_busy = 0.0;
+  // CPU time of the whole process (all its threads) per timed frame, and divided by the wall
+  // time: how many cores the renderer kept busy on average. On a machine shared with other
+  // work the wall times grow with the load but the CPU times much less.
+  double cpu_ms_per_frame = 0.0, cores_busy = 0.0;
 };
 
 // CPU time of this process, all threads, in milliseconds.
@@ -28,7 +29,8 @@ inline FrameTimes summarize_frames(std::vector<double> ms, double cpu_ms) {
   for (double m : ms) wall_ms += m;
   std::sort(ms.begin(), ms.end());
   const size_t n = ms.size();
-  return {n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]), ms.front(), wall_ms > 0.0 ? cpu_ms / wall_ms : 0.0};
+  return {n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]), ms.front(), cpu_ms / double(n),
+          wall_ms > 0.0 ? cpu_ms / wall_ms : 0.0};
 }
 
 }  // namespace ontile::peer

@@ -82,6 +82,7 @@ LlvmpipeRun run_llvmpipe(const LlvmpipeRequest& r) {
     if (line.rfind("median_ms: ", 0) == 0) median = (run.times.median_ms = std::atof(line.c_str() + 11)) > 0.0;
     if (line.rfind("min_ms: ", 0) == 0) min = (run.times.min_ms = std::atof(line.c_str() + 8)) > 0.0;
     if (line.rfind("cores_busy: ", 0) == 0) run.times.cores_busy = std::atof(line.c_str() + 12);
+    if (line.rfind("cpu_ms_per_frame: ", 0) == 0) run.times.cpu_ms_per_frame = std::atof(line.c_str() + 18);
     if (line.rfind("renderer: ", 0) == 0) run.renderer = line.substr(10);
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !median || !min) {
