@@ -1,6 +1,8 @@
 // Built-in full-screen functors (see full_screen.h).
 #include "shaders_cpp/full_screen.h"
 
+#include <cmath>
+
 namespace ontile {
 namespace {
 // A triangle whose clip-space corners (-1,-1), (3,-1), (-1,3) cover the whole viewport.
@@ -35,19 +37,36 @@ void FullScreenVertexShader::shade(uint32_t first, uint32_t count, glm::vec4* cl
   }
 }
 
-void ClearColorShader::shade(const QuadFragment&, QuadOutput& out) const {
-  for (int k = 0; k < outputs_; ++k)
-    for (int lane = 0; lane < kQuadLanes; ++lane) out.color[k][lane] = color_;
+void ClearColorShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
+  const int n = batch.padded_fragment_count();
+  for (int k = 0; k < outputs_; ++k) {
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) out.color[k][c][f] = color_[c];
+    }
+  }
 }
 
-void GradientSkyShader::shade(const QuadFragment& quad, QuadOutput& out) const {
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    const glm::vec3 d = quad.var3(FullScreenVertexShader::kViewDirection, lane);
-    const float len = glm::length(d);
-    const float up = len > 0.0f ? d.y / len : 0.0f;
-    const glm::vec3 c = up >= 0.0f ? glm::mix(horizon_, zenith_, glm::sqrt(up))
-                                   : glm::mix(horizon_, ground_, glm::min(1.0f, -up * 4.0f));
-    out.color[0][lane] = glm::vec4(c, 1.0f);
+// Per fragment as glm computes it: length = sqrt((x*x + y*y) + z*z), mix(a, b, t) =
+// a * (1 - t) + b * t, min(1, x) = x < 1 ? x : 1; both sides are evaluated and one selected.
+void GradientSkyShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
+  const int n = batch.padded_fragment_count();
+  const float* dx = batch.varyings[FullScreenVertexShader::kViewDirection];
+  const float* dy = batch.varyings[FullScreenVertexShader::kViewDirection + 1];
+  const float* dz = batch.varyings[FullScreenVertexShader::kViewDirection + 2];
+  for (int f = 0; f < n; ++f) {
+    const float len = std::sqrt((dx[f] * dx[f] + dy[f] * dy[f]) + dz[f] * dz[f]);
+    const bool has_length = len > 0.0f;
+    const float up = has_length ? dy[f] / (has_length ? len : 1.0f) : 0.0f;  // no branch: see batch_helpers.h
+    const float above = std::sqrt(up);
+    const float below_t = -up * 4.0f;
+    const float below = below_t < 1.0f ? below_t : 1.0f;
+    const bool is_above = up >= 0.0f;
+    for (int c = 0; c < 3; ++c) {
+      const float sky = horizon_[c] * (1.0f - above) + zenith_[c] * above;
+      const float earth = horizon_[c] * (1.0f - below) + ground_[c] * below;
+      out.color[0][c][f] = is_above ? sky : earth;
+    }
+    out.color[0][3][f] = 1.0f;
   }
 }
 

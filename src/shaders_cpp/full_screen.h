@@ -30,7 +30,7 @@ const uint32_t* full_screen_indices();
 class ClearColorShader final : public FragmentShader {
  public:
   ClearColorShader(glm::vec4 color, int output_count) : color_(color), outputs_(output_count) {}
-  void shade(const QuadFragment& quad, QuadOutput& out) const override;
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
 
  private:
   glm::vec4 color_;
@@ -42,7 +42,7 @@ class GradientSkyShader final : public FragmentShader {
  public:
   GradientSkyShader(glm::vec3 zenith, glm::vec3 horizon, glm::vec3 ground)
       : zenith_(zenith), horizon_(horizon), ground_(ground) {}
-  void shade(const QuadFragment& quad, QuadOutput& out) const override;
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
 
  private:
   glm::vec3 zenith_, horizon_, ground_;

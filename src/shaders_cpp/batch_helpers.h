@@ -1,0 +1,63 @@
+// Helpers shared by the batched fragment functors: the uv of one quad for its texture reads, and
+// interpolated normals made unit length over a whole batch as structure-of-arrays lanes.
+#pragma once
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "raster/shader_interface.h"
+
+namespace ontile {
+
+// Structure-of-arrays vectors over a batch's fragments: v[component][fragment].
+using BatchVec3 = float[3][kBatchFragments];
+using BatchVec4 = float[4][kBatchFragments];
+
+// The four lanes of quad q of varyings [first, first + 1], for Texture2D::sample_quad.
+inline void batch_quad_uv(const FragmentBatch& batch, int first, int q, glm::vec2 uv[kQuadLanes]) {
+  const int f0 = q * kQuadLanes;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    uv[lane] = {batch.varyings[first][f0 + lane], batch.varyings[first + 1][f0 + lane]};
+  }
+}
+
+// colour[c][fragment] *= texel[lane][c] for channels [0, channels) of quad q's lanes.
+template <int kChannels>
+inline void batch_multiply_quad(float (&colour)[kChannels][kBatchFragments], int channels, int q,
+                                const glm::vec4 texel[kQuadLanes]) {
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    for (int c = 0; c < channels; ++c) colour[c][q * kQuadLanes + lane] *= texel[lane][c];
+  }
+}
+
+inline glm::vec3 batch_var3(const FragmentBatch& batch, int first, int f) {
+  return {batch.varyings[first][f], batch.varyings[first + 1][f], batch.varyings[first + 2][f]};
+}
+
+inline glm::vec3 batch_get3(const BatchVec3& v, int f) { return {v[0][f], v[1][f], v[2][f]}; }
+inline void batch_set3(BatchVec3& v, int f, glm::vec3 value) {
+  v[0][f] = value.x;
+  v[1][f] = value.y;
+  v[2][f] = value.z;
+}
+
+// Varyings [first, first + 3) made unit length (a zero vector gives +Z) and negated on back
+// faces, for fragments [0, n): the same operations, in the same order, as glm::length and the
+// division by it in toon_unit_normal and shading_normal, so the bits match theirs.
+inline void batch_unit_normals(const FragmentBatch& batch, int first, int n, BatchVec3& out) {
+  const float* x = batch.varyings[first];
+  const float* y = batch.varyings[first + 1];
+  const float* z = batch.varyings[first + 2];
+  const float facing = batch.front_facing ? 1.0f : -1.0f;  // x * -1 is exactly -x
+  for (int f = 0; f < n; ++f) {
+    const float len = std::sqrt((x[f] * x[f] + y[f] * y[f]) + z[f] * z[f]);
+    const bool has_length = len > 0.0f;
+    // Divide unconditionally (by 1 where the length is 0) so the loop has no branches.
+    const float divisor = has_length ? len : 1.0f;
+    out[0][f] = (has_length ? x[f] / divisor : 0.0f) * facing;
+    out[1][f] = (has_length ? y[f] / divisor : 0.0f) * facing;
+    out[2][f] = (has_length ? z[f] / divisor : 1.0f) * facing;
+  }
+}
+
+}  // namespace ontile
