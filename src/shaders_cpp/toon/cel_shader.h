@@ -9,6 +9,7 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 #include "shaders_cpp/toon/toon_vertex_shader.h"
 #include "util/error.h"
@@ -49,42 +50,49 @@ class CelShader final : public FragmentShader {
     if (!(p_.step_size > 0.0f)) p_.step_size = 1.0f / static_cast<float>(p_.steps);
   }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec3 view_normal[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      view_normal[lane] =
-          toon_unit_normal(quad.var3(ToonVertexShader::kViewNormal, lane), quad.front_facing);
-    }
-    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(quad, out);
-    write_toon_normal_and_border<kOutputs>(quad, out, view_normal, p_.outputs);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    alignas(64) BatchVec3 view_normal;
+    batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);
+    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(batch, out);
+    write_toon_normal_and_border<kOutputs>(batch, out, view_normal, p_.outputs);
   }
 
  private:
-  void shade_color(const QuadFragment& quad, QuadOutput& out) const {
-    glm::vec4 lit[kQuadLanes], shadow[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      lit[lane] = p_.lit_color;
-      shadow[lane] = p_.shadow_color;
+  void shade_color(const FragmentBatch& batch, BatchOutput& out) const {
+    const int n = batch.padded_fragment_count();
+    alignas(64) BatchVec4 lit, shadow;
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) {
+        lit[c][f] = p_.lit_color[c];
+        shadow[c][f] = p_.shadow_color[c];
+      }
     }
     if constexpr (kTextures) {
-      glm::vec2 uv[kQuadLanes];
-      for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(ToonVertexShader::kUv, lane);
-      glm::vec4 texel[kQuadLanes];
-      if (p_.lit_map) {
-        p_.lit_map->sample_quad(p_.lit_sampler, uv, texel);
-        for (int lane = 0; lane < kQuadLanes; ++lane) lit[lane] *= texel[lane];
-      }
-      if (p_.shadow_map) {
-        p_.shadow_map->sample_quad(p_.shadow_sampler, uv, texel);
-        for (int lane = 0; lane < kQuadLanes; ++lane) shadow[lane] *= texel[lane];
+      for (int q = 0; q < batch.quad_count; ++q) {
+        glm::vec2 uv[kQuadLanes];
+        batch_quad_uv(batch, ToonVertexShader::kUv, q, uv);
+        glm::vec4 texel[kQuadLanes];
+        if (p_.lit_map) {
+          p_.lit_map->sample_quad(p_.lit_sampler, uv, texel);
+          batch_multiply_quad(lit, 4, q, texel);
+        }
+        if (p_.shadow_map) {
+          p_.shadow_map->sample_quad(p_.shadow_sampler, uv, texel);
+          batch_multiply_quad(shadow, 4, q, texel);
+        }
       }
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      const glm::vec3 n =
-          toon_unit_normal(quad.var3(ToonVertexShader::kNormal, lane), quad.front_facing);
-      const float shadow_amount = cel_shadow_factor(glm::dot(n, p_.to_light), p_.steps, p_.step_size);
-      out.color[0][lane] = glm::mix(lit[lane], shadow[lane], shadow_amount);
+    alignas(64) BatchVec3 normal;
+    batch_unit_normals(batch, ToonVertexShader::kNormal, n, normal);
+    const glm::vec3 l = p_.to_light;
+    alignas(64) float t[kBatchFragments];
+    for (int f = 0; f < n; ++f) {
+      const float n_dot_l = (normal[0][f] * l.x + normal[1][f] * l.y) + normal[2][f] * l.z;  // glm::dot
+      t[f] = cel_shadow_factor(n_dot_l, p_.steps, p_.step_size);
+    }
+    // glm::mix(lit, shadow, t) = lit * (1 - t) + shadow * t.
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) out.color[0][c][f] = lit[c][f] * (1.0f - t[f]) + shadow[c][f] * t[f];
     }
   }
 

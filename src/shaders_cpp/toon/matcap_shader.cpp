@@ -3,10 +3,6 @@
 
 namespace ontile {
 
-glm::vec2 matcap_uv(glm::vec3 view_normal) {
-  return {0.5f + 0.5f * view_normal.x, 0.5f - 0.5f * view_normal.y};
-}
-
 SamplerDesc matcap_sampler() {
   SamplerDesc s;
   s.mag_filter = FilterMode::Linear;

@@ -8,6 +8,7 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 #include "shaders_cpp/toon/toon_vertex_shader.h"
 #include "util/error.h"
@@ -18,7 +19,9 @@ namespace ontile {
 // camera): u = 0.5 + 0.5 * n.x, v = 0.5 - 0.5 * n.y. v is flipped because texture v = 0 is the
 // top row: a normal pointing up (+Y view) reads the top of the image, (0,0,1) its centre, and
 // (1,0,0) the middle of the right edge.
-glm::vec2 matcap_uv(glm::vec3 view_normal);
+inline glm::vec2 matcap_uv(glm::vec3 view_normal) {
+  return {0.5f + 0.5f * view_normal.x, 0.5f - 0.5f * view_normal.y};
+}
 
 // The MatCap sampler: bilinear, clamp to edge, base level only (MipmapMode::None). The uv of
 // neighbouring pixels can jump across the sphere on creases, which would select blurry mips.
@@ -63,49 +66,60 @@ class MatCapShader final : public FragmentShader {
     }
   }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec3 view_normal[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      view_normal[lane] =
-          toon_unit_normal(quad.var3(ToonVertexShader::kViewNormal, lane), quad.front_facing);
-    }
-    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(quad, view_normal, out);
-    write_toon_normal_and_border<kOutputs>(quad, out, view_normal, p_.outputs);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    alignas(64) BatchVec3 view_normal;
+    batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);
+    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(batch, view_normal, out);
+    write_toon_normal_and_border<kOutputs>(batch, out, view_normal, p_.outputs);
   }
 
  private:
-  void shade_color(const QuadFragment& quad, const glm::vec3 view_normal[kQuadLanes],
-                   QuadOutput& out) const {
-    glm::vec2 uv[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(ToonVertexShader::kUv, lane);
-    glm::vec2 matcap_coords[kQuadLanes];
-    if constexpr (kNormalMap) {
+  // Texture reads per quad in the per-quad functor's order (normal map, MatCap, base map), then
+  // the colour product over all fragments.
+  void shade_color(const FragmentBatch& batch, const BatchVec3& view_normal, BatchOutput& out) const {
+    const int n = batch.padded_fragment_count();
+    alignas(64) BatchVec3 world_normal;
+    if constexpr (kNormalMap) batch_unit_normals(batch, ToonVertexShader::kNormal, n, world_normal);
+    alignas(64) BatchVec4 matcap, albedo;
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
+    }
+    for (int q = 0; q < batch.quad_count; ++q) {
+      const int f0 = q * kQuadLanes;
+      glm::vec2 uv[kQuadLanes];
+      batch_quad_uv(batch, ToonVertexShader::kUv, q, uv);
+      glm::vec2 matcap_coords[kQuadLanes];
       glm::vec4 texel[kQuadLanes];
-      p_.normal_map->sample_quad(p_.normal_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) {
-        const glm::vec3 world_normal =
-            toon_unit_normal(quad.var3(ToonVertexShader::kNormal, lane), quad.front_facing);
-        const glm::vec3 mapped =
-            perturb_normal(world_normal, quad.var4(ToonVertexShader::kTangent, lane),
-                           decode_tangent_space_normal(texel[lane], p_.normal_scale));
-        matcap_coords[lane] = matcap_uv(toon_unit_normal(p_.world_to_view * mapped, true));
+      if constexpr (kNormalMap) {
+        p_.normal_map->sample_quad(p_.normal_sampler, uv, texel);
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          const int f = f0 + lane;
+          const glm::vec4 tangent(batch_var3(batch, ToonVertexShader::kTangent, f),
+                                  batch.varyings[ToonVertexShader::kTangent + 3][f]);
+          const glm::vec3 mapped = perturb_normal(batch_get3(world_normal, f), tangent,
+                                                  decode_tangent_space_normal(texel[lane], p_.normal_scale));
+          matcap_coords[lane] = matcap_uv(toon_unit_normal(p_.world_to_view * mapped, true));
+        }
+      } else {
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          matcap_coords[lane] = matcap_uv(batch_get3(view_normal, f0 + lane));
+        }
       }
-    } else {
-      for (int lane = 0; lane < kQuadLanes; ++lane) matcap_coords[lane] = matcap_uv(view_normal[lane]);
+      p_.matcap->sample_quad(matcap_sampler_, matcap_coords, texel);
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        for (int c = 0; c < 4; ++c) matcap[c][f0 + lane] = texel[lane][c];
+      }
+      if constexpr (kBaseMap) {
+        p_.base_map->sample_quad(p_.base_sampler, uv, texel);
+        batch_multiply_quad(albedo, 4, q, texel);
+      }
     }
-    glm::vec4 matcap[kQuadLanes];
-    p_.matcap->sample_quad(matcap_sampler_, matcap_coords, matcap);
-    glm::vec4 albedo[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] = p_.base_color;
-    if constexpr (kBaseMap) {
-      glm::vec4 texel[kQuadLanes];
-      p_.base_map->sample_quad(p_.base_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
+    // Only quads < quad_count have MatCap values: the rest is padding whose outputs are ignored.
+    const int real = batch.fragment_count();
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < real; ++f) out.color[0][c][f] = matcap[c][f] * albedo[c][f];
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      out.color[0][lane] = glm::vec4(glm::vec3(matcap[lane]) * glm::vec3(albedo[lane]), albedo[lane].w);
-    }
+    for (int f = 0; f < real; ++f) out.color[0][3][f] = albedo[3][f];
   }
 
   MatCapParams p_;

@@ -8,6 +8,7 @@
 
 #include "raster/shader_interface.h"
 #include "scene/scene.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 
 namespace ontile {
@@ -67,15 +68,16 @@ class OutlineColorShader final : public FragmentShader {
   OutlineColorShader(glm::vec4 color, NormalEncoding normal_encoding)
       : color_(color), outputs_{normal_encoding, glm::vec4(0.0f)} {}
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec3 view_normal[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) view_normal[lane] = glm::vec3(0.0f, 0.0f, 1.0f);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    const int n = batch.padded_fragment_count();
+    alignas(64) BatchVec3 view_normal;
+    for (int f = 0; f < n; ++f) batch_set3(view_normal, f, glm::vec3(0.0f, 0.0f, 1.0f));
     if constexpr ((kOutputs & ToonOutput::kColor) != 0u) {
-      for (int lane = 0; lane < kQuadLanes; ++lane) {
-        if (quad.lane_active(lane)) out.color[0][lane] = color_;
+      for (int c = 0; c < 4; ++c) {
+        for (int f = 0; f < n; ++f) out.color[0][c][f] = color_[c];
       }
     }
-    write_toon_normal_and_border<kOutputs>(quad, out, view_normal, outputs_);
+    write_toon_normal_and_border<kOutputs>(batch, out, view_normal, outputs_);
   }
 
  private:

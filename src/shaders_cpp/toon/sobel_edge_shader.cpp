@@ -5,6 +5,7 @@
 #include <string>
 
 #include "raster/texel_trace.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
 
@@ -282,15 +283,17 @@ glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
   return out[0];
 }
 
-void SobelEdgeShader::shade(const QuadFragment& quad, QuadOutput& out) const {
-  glm::vec2 uv[kQuadLanes];
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    uv[lane] = quad.var2(FullScreenVertexShader::kUv, lane);
-  }
-  glm::vec4 colour[kQuadLanes];
-  shade_lanes(uv, quad.lane_mask, colour);
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (quad.lane_active(lane)) out.color[0][lane] = colour[lane];
+void SobelEdgeShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
+  // Quad by quad: shade_lanes shares texel reads within a quad and records the trace per quad,
+  // so the reads and their order are those of shading the quads one at a time.
+  for (int q = 0; q < batch.quad_count; ++q) {
+    glm::vec2 uv[kQuadLanes];
+    batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);
+    glm::vec4 colour[kQuadLanes];
+    shade_lanes(uv, batch.lane_mask[q], colour);
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (batch.active(q * kQuadLanes + lane)) out.set(0, q * kQuadLanes + lane, colour[lane]);
+    }
   }
 }
 

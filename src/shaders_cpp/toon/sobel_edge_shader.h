@@ -93,9 +93,10 @@ class SobelEdgeShader final : public FragmentShader {
   // Throws Error for missing colour/depth textures, a normal or border texture whose size
   // differs from the depth texture's, or an invalid depth linearization.
   explicit SobelEdgeShader(const SobelEdgeParams& params);
-  void shade(const QuadFragment& quad, QuadOutput& out) const override;
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
 
-  // The output colour at one uv (what shade() writes for a lane), with the same texel trace.
+  // The output colour at one uv (what shade_batch() writes for a fragment), with the same texel
+  // trace.
   glm::vec4 shade_pixel(glm::vec2 uv) const;
 
  private:

@@ -8,6 +8,7 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/toon/cube_map.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 #include "shaders_cpp/toon/toon_vertex_shader.h"
@@ -36,39 +37,43 @@ class ToonEnvShader final : public FragmentShader {
     }
   }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec3 view_normal[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      view_normal[lane] =
-          toon_unit_normal(quad.var3(ToonVertexShader::kViewNormal, lane), quad.front_facing);
-    }
-    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(quad, view_normal, out);
-    write_toon_normal_and_border<kOutputs>(quad, out, view_normal, p_.outputs);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    alignas(64) BatchVec3 view_normal;
+    batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);
+    if constexpr ((kOutputs & ToonOutput::kColor) != 0u) shade_color(batch, view_normal, out);
+    write_toon_normal_and_border<kOutputs>(batch, out, view_normal, p_.outputs);
   }
 
  private:
-  void shade_color(const QuadFragment& quad, const glm::vec3 view_normal[kQuadLanes],
-                   QuadOutput& out) const {
-    glm::vec4 albedo[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] = p_.base_color;
-    if (p_.base_map) {  // one branch per quad: the base map is not a keyword of this shader
-      glm::vec2 uv[kQuadLanes];
-      for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(ToonVertexShader::kUv, lane);
-      glm::vec4 texel[kQuadLanes];
-      p_.base_map->sample_quad(p_.base_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
+  // Texture reads per quad in the per-quad functor's order (the base map for all four lanes,
+  // then the environment for each active lane), then the colour product over all fragments.
+  void shade_color(const FragmentBatch& batch, const BatchVec3& view_normal, BatchOutput& out) const {
+    const int n = batch.padded_fragment_count();
+    alignas(64) BatchVec3 world_normal;
+    if constexpr (!kCameraBased) batch_unit_normals(batch, ToonVertexShader::kNormal, n, world_normal);
+    const BatchVec3& direction = kCameraBased ? view_normal : world_normal;
+    alignas(64) BatchVec4 albedo;
+    alignas(64) BatchVec3 env = {};
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      glm::vec3 direction;
-      if constexpr (kCameraBased) {
-        direction = view_normal[lane];
-      } else {
-        direction = toon_unit_normal(quad.var3(ToonVertexShader::kNormal, lane), quad.front_facing);
+    for (int q = 0; q < batch.quad_count; ++q) {
+      if (p_.base_map) {  // one branch per quad: the base map is not a keyword of this shader
+        glm::vec2 uv[kQuadLanes];
+        batch_quad_uv(batch, ToonVertexShader::kUv, q, uv);
+        glm::vec4 texel[kQuadLanes];
+        p_.base_map->sample_quad(p_.base_sampler, uv, texel);
+        batch_multiply_quad(albedo, 4, q, texel);
       }
-      const glm::vec3 env(p_.environment->sample(direction));
-      out.color[0][lane] = glm::vec4(glm::vec3(albedo[lane]) * env, albedo[lane].w);
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const int f = q * kQuadLanes + lane;
+        if (batch.active(f)) batch_set3(env, f, glm::vec3(p_.environment->sample(batch_get3(direction, f))));
+      }
     }
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < n; ++f) out.color[0][c][f] = albedo[c][f] * env[c][f];
+    }
+    for (int f = 0; f < n; ++f) out.color[0][3][f] = albedo[3][f];
   }
 
   ToonEnvParams p_;

@@ -56,21 +56,30 @@ inline glm::vec3 toon_unit_normal(glm::vec3 n, bool front_facing) {
   return front_facing ? n : -n;
 }
 
-// Writes the normal and border outputs of `kOutputs` for the active lanes; the functor writes
-// colour (slot 0) itself. Shared by every toon functor so both pipelines encode identically.
+// Writes the normal and border outputs of `kOutputs` for every fragment of the batch (padding
+// included: the core ignores what it does not store); the functor writes colour (slot 0)
+// itself. Shared by every toon functor so both pipelines encode identically.
 template <uint32_t kOutputs>
-inline void write_toon_normal_and_border(const QuadFragment& quad, QuadOutput& out,
-                                         const glm::vec3 view_normal[kQuadLanes],
+inline void write_toon_normal_and_border(const FragmentBatch& batch, BatchOutput& out,
+                                         const float (&view_normal)[3][kBatchFragments],
                                          const ToonOutputParams& params) {
   static_assert(is_valid_toon_output_mask(kOutputs), "kOutputs must be a ToonOutput mask");
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!quad.lane_active(lane)) continue;
-    if constexpr ((kOutputs & ToonOutput::kNormal) != 0u) {
-      out.color[toon_output_slot(kOutputs, ToonOutput::kNormal)][lane] =
-          encode_view_normal(view_normal[lane], params.normal_encoding);
+  const int n = batch.padded_fragment_count();
+  if constexpr ((kOutputs & ToonOutput::kNormal) != 0u) {
+    auto& normal = out.color[toon_output_slot(kOutputs, ToonOutput::kNormal)];
+    // encode_view_normal per channel: n * 0.5 + 0.5 for Unorm, n as is for Float; alpha 1.
+    const bool unorm = params.normal_encoding == NormalEncoding::Unorm;
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < n; ++f) {
+        normal[c][f] = unorm ? view_normal[c][f] * 0.5f + 0.5f : view_normal[c][f];
+      }
     }
-    if constexpr ((kOutputs & ToonOutput::kBorder) != 0u) {
-      out.color[toon_output_slot(kOutputs, ToonOutput::kBorder)][lane] = params.border_color;
+    for (int f = 0; f < n; ++f) normal[3][f] = 1.0f;
+  }
+  if constexpr ((kOutputs & ToonOutput::kBorder) != 0u) {
+    auto& border = out.color[toon_output_slot(kOutputs, ToonOutput::kBorder)];
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) border[c][f] = params.border_color[c];
     }
   }
 }
