@@ -17,15 +17,15 @@ namespace ontile {
 
 // Slot k is input attachment k of the subpass.
 struct InputAttachmentSource {
-  glm::vec4 load(int slot, const QuadFragment& quad, int lane) const { return quad.input(slot, lane); }
+  glm::vec4 load(int slot, const FragmentBatch& batch, int f) const { return batch.input(slot, f); }
 };
 
-// Slot k is texture k, read at the lane's own pixel from the base level (every read goes
+// Slot k is texture k, read at the fragment's own pixel from the base level (every read goes
 // through the texel trace, so the texture-cache model counts it).
 struct TextureSource {
   std::array<const Texture2D*, 4> textures{};
-  glm::vec4 load(int slot, const QuadFragment& quad, int lane) const {
-    return textures[slot]->fetch(0, quad.x_px + (lane & 1), quad.y_px + (lane >> 1));
+  glm::vec4 load(int slot, const FragmentBatch& batch, int f) const {
+    return textures[slot]->fetch(0, batch.x_px(f), batch.y_px(f));
   }
 };
 
@@ -43,24 +43,45 @@ class DeferredLightingShader final : public FragmentShader {
         camera_position_(camera_position), width_px_(width_px), height_px_(height_px) {}
   bool may_discard() const override { return true; }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      const float depth = source_.load(0, quad, lane).x;
+  // Reads (depth, then the targets, fragment by fragment: the texel trace order of the classic
+  // variant) and decoding per fragment, then the lights over the batch.
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    const int count = batch.fragment_count();
+    BrdfBatch brdf{};  // zero where nothing is lit, so the sums below stay defined
+    alignas(64) BatchVec3 normal, world, to_view;
+    alignas(64) BatchVec3 direct = {};
+    uint64_t lit = 0;
+    for (int f = 0; f < count; ++f) {
+      if (!batch.active(f)) continue;
+      const float depth = source_.load(0, batch, f).x;
       if (!(depth < 1.0f)) {
-        out.discard(lane);
+        out.discard(f);
         continue;
       }
+      lit |= uint64_t{1} << f;
       glm::vec4 targets[3];
-      for (int k = 0; k < layout_.target_count(); ++k) targets[k] = source_.load(1 + k, quad, lane);
+      for (int k = 0; k < layout_.target_count(); ++k) targets[k] = source_.load(1 + k, batch, f);
       const DecodedGBuffer g = decode_gbuffer(layout_, targets);
-      const int x = quad.x_px + (lane & 1), y = quad.y_px + (lane >> 1);
-      const glm::dvec3 world = world_position(x, y, depth);
-      const glm::vec3 to_view(glm::normalize(camera_position_ - world));
-      glm::vec3 rgb = direct_lighting(lighting_, g.brdf, g.normal, glm::vec3(world), to_view, x, y);
-      if (!layout_.light_in_gbuffer) rgb += lighting_.ambient * g.brdf.diffuse_color;
-      out.color[0][lane] = glm::vec4(rgb, layout_.light_in_gbuffer ? 0.0f : 1.0f);
+      for (int c = 0; c < 3; ++c) {
+        brdf.diffuse_color[c][f] = g.brdf.diffuse_color[c];
+        brdf.f0[c][f] = g.brdf.f0[c];
+      }
+      brdf.roughness[f] = g.brdf.roughness;
+      batch_set3(normal, f, g.normal);
+      const glm::dvec3 w = world_position(batch.x_px(f), batch.y_px(f), depth);
+      batch_set3(world, f, glm::vec3(w));
+      batch_set3(to_view, f, glm::vec3(glm::normalize(camera_position_ - w)));
     }
+    direct_lighting(lighting_, brdf, normal, world, to_view, batch, lit, direct);
+    const bool add_ambient = !layout_.light_in_gbuffer;
+    for (int c = 0; c < 3; ++c) {
+      const float ambient = lighting_.ambient[c];
+      for (int f = 0; f < count; ++f) {
+        out.color[0][c][f] = add_ambient ? direct[c][f] + ambient * brdf.diffuse_color[c][f] : direct[c][f];
+      }
+    }
+    const float alpha = layout_.light_in_gbuffer ? 0.0f : 1.0f;
+    for (int f = 0; f < count; ++f) out.color[0][3][f] = alpha;
   }
 
  private:
@@ -88,10 +109,10 @@ class TonemapLightShader final : public FragmentShader {
  public:
   explicit TonemapLightShader(Source source) : source_(source) {}
   bool per_sample_shading() const override { return true; }
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      out.color[0][lane] = glm::vec4(tonemap_aces_fitted(glm::vec3(source_.load(0, quad, lane))), 1.0f);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    for (int f = 0; f < batch.fragment_count(); ++f) {
+      if (!batch.active(f)) continue;
+      out.set(0, f, glm::vec4(tonemap_aces_fitted(glm::vec3(source_.load(0, batch, f))), 1.0f));
     }
   }
 

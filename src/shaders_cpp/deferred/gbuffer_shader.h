@@ -14,21 +14,23 @@ class GBufferShader final : public FragmentShader {
       : material_(material), layout_(layout), ambient_(ambient) {}
   bool may_discard() const override { return kAlphaTest; }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    SurfacePoint surface[kQuadLanes];
-    const uint8_t lanes =
-        evaluate_pbr_quad<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, quad, out, surface);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    SurfaceBatch s;
+    evaluate_pbr_batch<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, batch, out, s);
+    const int count = batch.fragment_count();
+    alignas(64) BatchVec3 normal;
+    shading_normals(batch, count, normal);
     const int first_target = layout_.light_in_gbuffer ? 1 : 0;
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!((lanes >> lane) & 1u)) continue;
-      const SurfacePoint& s = surface[lane];
-      const GBufferSurface g{glm::vec3(s.base_color), s.metallic, s.roughness, shading_normal(quad, lane)};
+    for (int f = 0; f < count; ++f) {
+      const GBufferSurface g{{s.base_color[0][f], s.base_color[1][f], s.base_color[2][f]}, s.metallic[f],
+                             s.roughness[f], batch_get3(normal, f)};
       glm::vec4 targets[3];
       encode_gbuffer(layout_, g, targets);
-      for (int k = 0; k < layout_.target_count(); ++k) out.color[first_target + k][lane] = targets[k];
+      for (int k = 0; k < layout_.target_count(); ++k) out.set(first_target + k, f, targets[k]);
       if (layout_.light_in_gbuffer) {
         const BrdfInputs brdf = metallic_roughness_brdf(g.base_color, g.metallic, g.roughness);
-        out.color[0][lane] = glm::vec4(ambient_ * brdf.diffuse_color + s.emission, 1.0f);
+        const glm::vec3 emission(s.emission[0][f], s.emission[1][f], s.emission[2][f]);
+        out.set(0, f, glm::vec4(ambient_ * brdf.diffuse_color + emission, 1.0f));
       }
     }
   }

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/shader_interface.h"
+
 namespace ontile {
 
 // What the BRDF needs of a surface point, in the form a G-buffer can hold.
@@ -24,6 +26,36 @@ inline BrdfInputs metallic_roughness_brdf(glm::vec3 base_color, float metallic, 
   b.f0 = glm::mix(glm::vec3(0.04f), base_color, metallic);
   b.roughness = roughness;
   return b;
+}
+
+// BRDF inputs of a batch's fragments, structure-of-arrays.
+struct BrdfBatch {
+  alignas(64) float diffuse_color[3][kBatchFragments];
+  alignas(64) float f0[3][kBatchFragments];
+  alignas(64) float roughness[kBatchFragments];
+
+  BrdfInputs at(int f) const {
+    BrdfInputs b;
+    b.diffuse_color = {diffuse_color[0][f], diffuse_color[1][f], diffuse_color[2][f]};
+    b.f0 = {f0[0][f], f0[1][f], f0[2][f]};
+    b.roughness = roughness[f];
+    return b;
+  }
+};
+
+// metallic_roughness_brdf for fragments [0, n), channel by channel with glm's operations:
+// base * (1 - metallic) and mix(0.04, base, metallic) = 0.04 * (1 - metallic) + base * metallic.
+inline void metallic_roughness_brdf(const float* const base_color[3], const float* metallic,
+                                    const float* roughness, int n, BrdfBatch& out) {
+  for (int c = 0; c < 3; ++c) {
+    const float* base = base_color[c];
+    for (int f = 0; f < n; ++f) {
+      const float one_minus_metallic = 1.0f - metallic[f];
+      out.diffuse_color[c][f] = base[f] * one_minus_metallic;
+      out.f0[c][f] = 0.04f * one_minus_metallic + base[f] * metallic[f];
+    }
+  }
+  for (int f = 0; f < n; ++f) out.roughness[f] = roughness[f];
 }
 
 // Perceptual roughness is clamped to 0.045 (Filament's minimum) so an 8-bit G-buffer value of

@@ -14,21 +14,36 @@ class ForwardLitShader final : public FragmentShader {
       : material_(material), lighting_(lighting), camera_position_(camera_position) {}
   bool may_discard() const override { return kAlphaTest; }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    SurfacePoint surface[kQuadLanes];
-    const uint8_t lanes =
-        evaluate_pbr_quad<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, quad, out, surface);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!((lanes >> lane) & 1u)) continue;
-      const SurfacePoint& s = surface[lane];
-      const BrdfInputs brdf = metallic_roughness_brdf(glm::vec3(s.base_color), s.metallic, s.roughness);
-      const glm::vec3 position = quad.var3(MeshVertexShader::kWorldPos, lane);
-      const glm::vec3 to_view = glm::normalize(camera_position_ - position);
-      const glm::vec3 rgb = lighting_.ambient * brdf.diffuse_color + s.emission +
-                            direct_lighting(lighting_, brdf, shading_normal(quad, lane), position, to_view,
-                                            quad.x_px + (lane & 1), quad.y_px + (lane >> 1));
-      out.color[0][lane] = glm::vec4(rgb, s.base_color.w);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    const int n = batch.padded_fragment_count();
+    SurfaceBatch s;
+    evaluate_pbr_batch<kBaseMap, kAlphaTest, kMetallicRoughnessMap, kEmissionMap>(material_, batch, out, s);
+    BrdfBatch brdf;
+    const float* const base[3] = {s.base_color[0], s.base_color[1], s.base_color[2]};
+    metallic_roughness_brdf(base, s.metallic, s.roughness, n, brdf);
+    alignas(64) BatchVec3 normal, position, to_view;
+    alignas(64) BatchVec3 direct = {};  // stays 0 for fragments that are not stored
+    shading_normals(batch, n, normal);
+    for (int f = 0; f < n; ++f) {
+      const glm::vec3 p = batch_var3(batch, MeshVertexShader::kWorldPos, f);
+      batch_set3(position, f, p);
+      batch_set3(to_view, f, glm::normalize(camera_position_ - p));
     }
+    // Lighting only for fragments that are stored: active and not discarded.
+    uint64_t lit = 0;
+    for (int f = 0; f < batch.fragment_count(); ++f) {
+      if (batch.active(f)) lit |= uint64_t{1} << f;
+    }
+    lit &= ~out.discard_mask;
+    direct_lighting(lighting_, brdf, normal, position, to_view, batch, lit, direct);
+    const int count = batch.fragment_count();
+    for (int c = 0; c < 3; ++c) {
+      const float ambient = lighting_.ambient[c];
+      for (int f = 0; f < count; ++f) {
+        out.color[0][c][f] = (ambient * brdf.diffuse_color[c][f] + s.emission[c][f]) + direct[c][f];
+      }
+    }
+    for (int f = 0; f < count; ++f) out.color[0][3][f] = s.base_color[3][f];
   }
 
  private:

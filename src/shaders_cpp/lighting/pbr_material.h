@@ -1,4 +1,4 @@
-// A glTF metallic-roughness material evaluated over one 2x2 quad: base colour, metallic,
+// A glTF metallic-roughness material evaluated over a batch of quads: base colour, metallic,
 // roughness, emission and the shading normal, with each texture a compile-time variant. The
 // forward and G-buffer functors share it, so both see the same surface.
 #pragma once
@@ -6,6 +6,7 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/mesh_vertex_shader.h"
 
 namespace ontile {
@@ -24,69 +25,65 @@ struct PbrMaterialParams {
   float alpha_cutoff = 0.5f;
 };
 
-struct SurfacePoint {
-  glm::vec4 base_color{1.0f};  // alpha = coverage
-  float metallic = 0.0f;
-  float roughness = 1.0f;
-  glm::vec3 emission{0.0f};
+// The material at each fragment of a batch, structure-of-arrays.
+struct SurfaceBatch {
+  alignas(64) float base_color[4][kBatchFragments];  // alpha = coverage
+  alignas(64) float metallic[kBatchFragments];
+  alignas(64) float roughness[kBatchFragments];
+  alignas(64) float emission[3][kBatchFragments];
 };
 
 // glTF 2.0 3.9.2-3.9.3: factors times textures (base colour and emission sRGB-decoded by the
-// texture, metallic-roughness linear). Textures are sampled for all four lanes so helper lanes
-// give the derivatives.
-template <bool kBaseMap, bool kMetallicRoughnessMap, bool kEmissionMap>
-void evaluate_pbr_material(const PbrMaterialParams& p, const QuadFragment& quad, SurfacePoint out[kQuadLanes]) {
-  glm::vec2 uv[kQuadLanes];
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    uv[lane] = quad.var2(MeshVertexShader::kUv, lane);
-    out[lane].base_color = p.base_color;
-    out[lane].metallic = p.metallic;
-    out[lane].roughness = p.roughness;
-    out[lane].emission = p.emission;
-  }
-  glm::vec4 texel[kQuadLanes];
-  if constexpr (kBaseMap) {
-    p.base_map->sample_quad(p.base_sampler, uv, texel);
-    for (int lane = 0; lane < kQuadLanes; ++lane) out[lane].base_color *= texel[lane];
-  }
-  if constexpr (kMetallicRoughnessMap) {
-    p.metallic_roughness_map->sample_quad(p.metallic_roughness_sampler, uv, texel);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      out[lane].roughness *= texel[lane].y;
-      out[lane].metallic *= texel[lane].z;
-    }
-  }
-  if constexpr (kEmissionMap) {
-    p.emission_map->sample_quad(p.emission_sampler, uv, texel);
-    for (int lane = 0; lane < kQuadLanes; ++lane) out[lane].emission *= glm::vec3(texel[lane]);
-  }
-}
-
-// The material over the quad plus the glTF MASK alpha test (3.9.4): returns the lanes left to
-// shade; alpha-tested lanes below the cutoff are discarded in `out`.
+// texture, metallic-roughness linear), plus the MASK alpha test (3.9.4): active fragments below
+// the cutoff are discarded in `out`. Textures are sampled per quad, for all four lanes so helper
+// lanes give the derivatives, in the order base, metallic-roughness, emission.
 template <bool kBaseMap, bool kAlphaTest, bool kMetallicRoughnessMap, bool kEmissionMap>
-uint8_t evaluate_pbr_quad(const PbrMaterialParams& p, const QuadFragment& quad, QuadOutput& out,
-                          SurfacePoint surface[kQuadLanes]) {
-  evaluate_pbr_material<kBaseMap, kMetallicRoughnessMap, kEmissionMap>(p, quad, surface);
-  uint8_t lanes = 0;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!quad.lane_active(lane)) continue;
-    if (kAlphaTest && surface[lane].base_color.w < p.alpha_cutoff) {
-      out.discard(lane);
-      continue;
-    }
-    lanes |= static_cast<uint8_t>(1u << lane);
+void evaluate_pbr_batch(const PbrMaterialParams& p, const FragmentBatch& batch, BatchOutput& out,
+                        SurfaceBatch& s) {
+  const int n = batch.padded_fragment_count();
+  for (int c = 0; c < 4; ++c) {
+    for (int f = 0; f < n; ++f) s.base_color[c][f] = p.base_color[c];
   }
-  return lanes;
+  for (int f = 0; f < n; ++f) {
+    s.metallic[f] = p.metallic;
+    s.roughness[f] = p.roughness;
+  }
+  for (int c = 0; c < 3; ++c) {
+    for (int f = 0; f < n; ++f) s.emission[c][f] = p.emission[c];
+  }
+  if constexpr (kBaseMap || kMetallicRoughnessMap || kEmissionMap) {
+    for (int q = 0; q < batch.quad_count; ++q) {
+      glm::vec2 uv[kQuadLanes];
+      batch_quad_uv(batch, MeshVertexShader::kUv, q, uv);
+      glm::vec4 texel[kQuadLanes];
+      if constexpr (kBaseMap) {
+        p.base_map->sample_quad(p.base_sampler, uv, texel);
+        batch_multiply_quad(s.base_color, 4, q, texel);
+      }
+      if constexpr (kMetallicRoughnessMap) {
+        p.metallic_roughness_map->sample_quad(p.metallic_roughness_sampler, uv, texel);
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          s.roughness[q * kQuadLanes + lane] *= texel[lane].y;
+          s.metallic[q * kQuadLanes + lane] *= texel[lane].z;
+        }
+      }
+      if constexpr (kEmissionMap) {
+        p.emission_map->sample_quad(p.emission_sampler, uv, texel);
+        batch_multiply_quad(s.emission, 3, q, texel);
+      }
+    }
+  }
+  if constexpr (kAlphaTest) {
+    for (int f = 0; f < batch.fragment_count(); ++f) {
+      if (batch.active(f) && s.base_color[3][f] < p.alpha_cutoff) out.discard(f);
+    }
+  }
 }
 
-// The interpolated vertex normal, normalised and flipped for back faces (seen only on
-// double-sided materials).
-inline glm::vec3 shading_normal(const QuadFragment& quad, int lane) {
-  const glm::vec3 n = quad.var3(MeshVertexShader::kNormal, lane);
-  const float length = glm::length(n);
-  const glm::vec3 unit = length > 0.0f ? n / length : glm::vec3(0.0f, 0.0f, 1.0f);
-  return quad.front_facing ? unit : -unit;
+// The interpolated vertex normals, normalised and flipped for back faces (seen only on
+// double-sided materials), for fragments [0, n).
+inline void shading_normals(const FragmentBatch& batch, int n, BatchVec3& normal) {
+  batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
 }
 
 }  // namespace ontile

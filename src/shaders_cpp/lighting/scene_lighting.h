@@ -2,10 +2,13 @@
 // main directional light, the punctual lights with their screen-space light grid, and the one
 // function that sums the lights, so forward and deferred add the same terms in the same order.
 #pragma once
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/lighting/brdf.h"
 #include "shaders_cpp/lighting/light_grid.h"
 #include "shaders_cpp/lighting/punctual_light.h"
@@ -20,18 +23,42 @@ struct SceneLighting {
   LightGrid grid;
 };
 
-// Direct light reflected towards the viewer at one pixel: the sun, then the grid cell's lights
-// in ascending index order (a fixed order, so every variant rounds identically).
-inline glm::vec3 direct_lighting(const SceneLighting& lighting, const BrdfInputs& brdf, glm::vec3 n,
-                                 glm::vec3 world_position, glm::vec3 to_view, int x_px, int y_px) {
-  glm::vec3 sum = shade_ggx(brdf, n, to_view, lighting.sun_to_light, lighting.sun_radiance);
-  for (const uint32_t index : lighting.grid.lights_at(x_px, y_px)) {
-    glm::vec3 to_light, radiance;
-    if (light_incidence(lighting.lights[index], world_position, to_light, radiance)) {
-      sum += shade_ggx(brdf, n, to_view, to_light, radiance);
-    }
+// Direct light reflected towards the viewer, into sum, for the fragments of `batch` whose bit
+// is set in `lit` (bit f: fragment f, all below fragment_count()): the sun, then the grid
+// cell's lights in ascending index order (a fixed order, so every variant rounds identically),
+// light by light over runs of fragments that share a grid cell.
+inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf, const BatchVec3& n,
+                            const BatchVec3& world_position, const BatchVec3& to_view,
+                            const FragmentBatch& batch, uint64_t lit, BatchVec3& sum) {
+  const int count = batch.fragment_count();
+  for (int f = 0; f < count; ++f) {
+    if (!((lit >> f) & 1u)) continue;
+    batch_set3(sum, f, shade_ggx(brdf.at(f), batch_get3(n, f), batch_get3(to_view, f), lighting.sun_to_light,
+                                 lighting.sun_radiance));
   }
-  return sum;
+  int begin = 0;
+  while (begin < count) {
+    const std::span<const uint32_t> lights = lighting.grid.lights_at(batch.x_px(begin), batch.y_px(begin));
+    int end = begin + 1;
+    while (end < count) {
+      const std::span<const uint32_t> next = lighting.grid.lights_at(batch.x_px(end), batch.y_px(end));
+      if (next.data() != lights.data() || next.size() != lights.size()) break;
+      ++end;
+    }
+    for (const uint32_t index : lights) {
+      const PunctualLight& light = lighting.lights[index];
+      for (int f = begin; f < end; ++f) {
+        if (!((lit >> f) & 1u)) continue;
+        glm::vec3 to_light, radiance;
+        if (light_incidence(light, batch_get3(world_position, f), to_light, radiance)) {
+          const glm::vec3 reflected =
+              shade_ggx(brdf.at(f), batch_get3(n, f), batch_get3(to_view, f), to_light, radiance);
+          batch_set3(sum, f, batch_get3(sum, f) + reflected);
+        }
+      }
+    }
+    begin = end;
+  }
 }
 
 }  // namespace ontile
