@@ -2,12 +2,14 @@
 #include "pipelines/lit_shader.h"
 
 #include "pipelines/gltf_surface_state.h"
+#include "shaders_cpp/batch_helpers.h"
 
 namespace ontile {
 namespace {
 
 // Runs the Lambert functor (output 0), then writes the extra outputs of LitShaderOptions for
-// every lane it kept. The normal is computed exactly as LambertShader computes the one it lights.
+// every fragment (the core stores only those it kept). The normal is computed exactly as
+// LambertShader computes the one it lights.
 class LitExtraOutputs final : public FragmentShader {
  public:
   LitExtraOutputs(std::unique_ptr<FragmentShader> lit, std::optional<NormalStorage> normal_output,
@@ -15,21 +17,19 @@ class LitExtraOutputs final : public FragmentShader {
       : lit_(std::move(lit)), normal_output_(normal_output), primitive_id_output_(primitive_id_output) {}
   bool may_discard() const override { return lit_->may_discard(); }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    lit_->shade(quad, out);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane) || ((out.discard_mask >> lane) & 1u)) continue;
-      int k = 1;
-      if (normal_output_) {
-        glm::vec3 n = quad.var3(MeshVertexShader::kNormal, lane);
-        const float len = glm::length(n);
-        n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-        if (!quad.front_facing) n = -n;
-        out.color[k++][lane] = encode_normal(*normal_output_, n);
-      }
-      if (primitive_id_output_) {
-        out.color[k][lane] = glm::vec4(static_cast<float>(quad.primitive_id), 0.0f, 0.0f, 1.0f);
-      }
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    lit_->shade_batch(batch, out);
+    const int count = batch.fragment_count();
+    int k = 1;
+    if (normal_output_) {
+      alignas(64) BatchVec3 normal;
+      batch_unit_normals(batch, MeshVertexShader::kNormal, count, normal);
+      for (int f = 0; f < count; ++f) out.set(k, f, encode_normal(*normal_output_, batch_get3(normal, f)));
+      ++k;
+    }
+    if (primitive_id_output_) {
+      const glm::vec4 id(static_cast<float>(batch.primitive_id), 0.0f, 0.0f, 1.0f);
+      for (int f = 0; f < count; ++f) out.set(k, f, id);
     }
   }
 

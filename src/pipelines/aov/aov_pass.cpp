@@ -4,6 +4,7 @@
 
 #include "context/scene_renderers.h"
 #include "pipelines/lit_shader.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -20,39 +21,40 @@ glm::vec4 aov_clear_value(AovKind kind) {
   return glm::vec4(0.0f);
 }
 
-// Writes the AOVs of each lane the material's own functor keeps: the wrapped functor runs only
-// when it may discard, so its discards (alpha test) remove the same fragments as in lambert.
+// Writes the AOVs of each fragment the material's own functor keeps: the wrapped functor runs
+// only when it may discard, so its discards (alpha test) remove the same fragments as in lambert.
 class AovShader final : public FragmentShader {
  public:
   AovShader(std::unique_ptr<FragmentShader> material_shader, std::vector<AovKind> kinds)
       : material_(std::move(material_shader)), kinds_(std::move(kinds)) {}
   bool may_discard() const override { return material_ && material_->may_discard(); }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     if (may_discard()) {
-      QuadOutput material_out;
-      material_->shade(quad, material_out);
+      // The material's colours go to a scratch output; only its discards are kept.
+      BatchOutput material_out;
+      material_out.discard_mask = 0;
+      material_->shade_batch(batch, material_out);
       out.discard_mask = material_out.discard_mask;
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane) || ((out.discard_mask >> lane) & 1u)) continue;
-      for (size_t k = 0; k < kinds_.size(); ++k) {
-        switch (kinds_[k]) {
-          case AovKind::Depth:
-            out.color[k][lane] = glm::vec4(quad.depth[lane], 0.0f, 0.0f, 1.0f);
-            break;
-          case AovKind::PrimitiveId:
-            out.color[k][lane] = glm::vec4(static_cast<float>(quad.primitive_id), 0.0f, 0.0f, 1.0f);
-            break;
-          case AovKind::Normal: {
-            // As the Lambert functor shades: normalised, flipped on back faces.
-            glm::vec3 n = quad.var3(MeshVertexShader::kNormal, lane);
-            const float len = glm::length(n);
-            n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
-            if (!quad.front_facing) n = -n;
-            out.color[k][lane] = glm::vec4(n, 1.0f);
-            break;
+    const int count = batch.fragment_count();
+    for (size_t k = 0; k < kinds_.size(); ++k) {
+      const int target = static_cast<int>(k);
+      switch (kinds_[k]) {
+        case AovKind::Depth:
+          for (int f = 0; f < count; ++f) out.set(target, f, glm::vec4(batch.depth[f], 0.0f, 0.0f, 1.0f));
+          break;
+        case AovKind::PrimitiveId:
+          for (int f = 0; f < count; ++f) {
+            out.set(target, f, glm::vec4(static_cast<float>(batch.primitive_id), 0.0f, 0.0f, 1.0f));
           }
+          break;
+        case AovKind::Normal: {
+          // As the Lambert functor shades: normalised, flipped on back faces.
+          alignas(64) BatchVec3 normal;
+          batch_unit_normals(batch, MeshVertexShader::kNormal, count, normal);
+          for (int f = 0; f < count; ++f) out.set(target, f, glm::vec4(batch_get3(normal, f), 1.0f));
+          break;
         }
       }
     }
