@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
 
@@ -21,10 +22,14 @@ class CopyShader final : public FragmentShader {
  public:
   CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
       : source_(std::move(source)), sampler_(sampler) {}
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec2 uv[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(FullScreenVertexShader::kUv, lane);
-    source_->sample_quad(sampler_, uv, out.color[0]);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    for (int q = 0; q < batch.quad_count; ++q) {
+      glm::vec2 uv[kQuadLanes];
+      batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);
+      glm::vec4 texel[kQuadLanes];
+      source_->sample_quad(sampler_, uv, texel);
+      for (int lane = 0; lane < kQuadLanes; ++lane) out.set(0, q * kQuadLanes + lane, texel[lane]);
+    }
   }
 
  private:
@@ -37,15 +42,18 @@ class TonemapShader final : public FragmentShader {
  public:
   TonemapShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler, float exposure)
       : source_(std::move(source)), sampler_(sampler), exposure_(exposure) {}
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec2 uv[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(FullScreenVertexShader::kUv, lane);
-    glm::vec4 hdr[kQuadLanes];
-    source_->sample_quad(sampler_, uv, hdr);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      const glm::vec3 c = glm::vec3(hdr[lane]) * exposure_;
-      const glm::vec3 mapped = kTonemapper == Tonemapper::AcesFitted ? tonemap_aces_fitted(c) : tonemap_reinhard(c);
-      out.color[0][lane] = glm::vec4(mapped, 1.0f);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    for (int q = 0; q < batch.quad_count; ++q) {
+      glm::vec2 uv[kQuadLanes];
+      batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);
+      glm::vec4 hdr[kQuadLanes];
+      source_->sample_quad(sampler_, uv, hdr);
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const glm::vec3 c = glm::vec3(hdr[lane]) * exposure_;
+        const glm::vec3 mapped =
+            kTonemapper == Tonemapper::AcesFitted ? tonemap_aces_fitted(c) : tonemap_reinhard(c);
+        out.set(0, q * kQuadLanes + lane, glm::vec4(mapped, 1.0f));
+      }
     }
   }
 

@@ -12,6 +12,7 @@
 #include "pipelines/universal/main_light_shadows.h"
 #include "pipelines/universal/universal_lights.h"
 #include "raster/shader_interface.h"
+#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/mesh_vertex_shader.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 
@@ -71,52 +72,69 @@ class UniversalLitShader final : public UniversalLitFragment {
   using UniversalLitFragment::UniversalLitFragment;
   bool may_discard() const override { return kAlphaTest; }
 
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    glm::vec2 uv[kQuadLanes];
-    glm::vec4 albedo[kQuadLanes];
-    glm::vec3 emissive[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      uv[lane] = quad.var2(MeshVertexShader::kUv, lane);
-      albedo[lane] = p_.surface.base_color;
-      emissive[lane] = p_.emission;
+  // Texture reads per quad in the per-quad functor's order: base map, emission map, then the
+  // shadow-map lookups of the quad's kept fragments; then the lights fragment by fragment.
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    const int n = batch.padded_fragment_count();
+    const int count = batch.fragment_count();
+    alignas(64) BatchVec4 albedo;
+    alignas(64) BatchVec3 emissive, normal;
+    alignas(64) float visibility[kBatchFragments];
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < n; ++f) albedo[c][f] = p_.surface.base_color[c];
     }
-    if constexpr (kBaseMap) {
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < n; ++f) emissive[c][f] = p_.emission[c];
+    }
+    batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
+    uint64_t lit = 0;
+    for (int q = 0; q < batch.quad_count; ++q) {
+      glm::vec2 uv[kQuadLanes];
+      batch_quad_uv(batch, MeshVertexShader::kUv, q, uv);
       glm::vec4 texel[kQuadLanes];
-      p_.surface.base_map->sample_quad(p_.surface.base_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) albedo[lane] *= texel[lane];
-    }
-    if constexpr (kEmission) {
-      if (p_.emission_map) {  // glTF 2.0 3.9.3: emissiveFactor x emissiveTexture
-        glm::vec4 texel[kQuadLanes];
-        p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
-        for (int lane = 0; lane < kQuadLanes; ++lane) emissive[lane] *= glm::vec3(texel[lane]);
+      if constexpr (kBaseMap) {
+        p_.surface.base_map->sample_quad(p_.surface.base_sampler, uv, texel);
+        batch_multiply_quad(albedo, 4, q, texel);
+      }
+      if constexpr (kEmission) {
+        if (p_.emission_map) {  // glTF 2.0 3.9.3: emissiveFactor x emissiveTexture
+          p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
+          batch_multiply_quad(emissive, 3, q, texel);
+        }
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const int f = q * kQuadLanes + lane;
+        if (!batch.active(f)) continue;
+        if constexpr (kAlphaTest) {
+          if (albedo[3][f] < p_.surface.alpha_cutoff) {
+            out.discard(f);
+            continue;
+          }
+        }
+        lit |= uint64_t{1} << f;
+        if constexpr (kShadows) {
+          visibility[f] = main_light_visibility(p_.shadow, batch_var3(batch, MeshVertexShader::kWorldPos, f),
+                                                batch_get3(normal, f), p_.main_light.to_light);
+        }
       }
     }
     const float shininess = std::exp2(10.0f * p_.smoothness + 1.0f);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      if constexpr (kAlphaTest) {
-        if (albedo[lane].w < p_.surface.alpha_cutoff) {
-          out.discard(lane);
-          continue;
-        }
-      }
-      const glm::vec3 n = toon_unit_normal(quad.var3(MeshVertexShader::kNormal, lane), quad.front_facing);
-      const glm::vec3 position = quad.var3(MeshVertexShader::kWorldPos, lane);
+    for (int f = 0; f < count; ++f) {
+      if (!((lit >> f) & 1u)) continue;
+      const glm::vec3 n_f = batch_get3(normal, f);
+      const glm::vec3 position = batch_var3(batch, MeshVertexShader::kWorldPos, f);
       const glm::vec3 to_camera = p_.camera_position - position;
       const float camera_distance = glm::length(to_camera);
-      const glm::vec3 to_view = camera_distance > 0.0f ? to_camera / camera_distance : n;
-      const glm::vec3 base(albedo[lane]);
+      const glm::vec3 to_view = camera_distance > 0.0f ? to_camera / camera_distance : n_f;
+      const glm::vec3 base(albedo[0][f], albedo[1][f], albedo[2][f]);
       const glm::vec3 diffuse_color = base * (1.0f - p_.metallic);
       const glm::vec3 specular_color = glm::mix(glm::vec3(0.04f), base, p_.metallic);
       // Ambient stands in for both indirect diffuse and the environment reflection URP would
       // take from a reflection probe, so metals are not black outside their highlights.
       glm::vec3 rgb = p_.ambient * (diffuse_color + specular_color);
       glm::vec3 main_radiance = p_.main_light.radiance;
-      if constexpr (kShadows) {
-        main_radiance *= main_light_visibility(p_.shadow, position, n, p_.main_light.to_light);
-      }
-      rgb += blinn_phong(diffuse_color, specular_color, shininess, n, to_view, p_.main_light.to_light,
+      if constexpr (kShadows) main_radiance *= visibility[f];
+      rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, p_.main_light.to_light,
                          main_radiance);
       for (int i = 0; i < p_.additional_light_count; ++i) {
         const AdditionalLight& light = p_.additional_lights[i];
@@ -125,13 +143,13 @@ class UniversalLitShader final : public UniversalLitFragment {
         if (light.type != AdditionalLight::Type::Directional) {
           const glm::vec3 offset = light.position - position;
           const float distance_squared = glm::dot(offset, offset);
-          to_light = distance_squared > 0.0f ? offset / std::sqrt(distance_squared) : n;
+          to_light = distance_squared > 0.0f ? offset / std::sqrt(distance_squared) : n_f;
           radiance *= range_attenuation(distance_squared, light.range) * spot_attenuation(light, -to_light);
         }
-        rgb += blinn_phong(diffuse_color, specular_color, shininess, n, to_view, to_light, radiance);
+        rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, to_light, radiance);
       }
-      if constexpr (kEmission) rgb += emissive[lane];
-      out.color[0][lane] = glm::vec4(rgb, albedo[lane].w);
+      if constexpr (kEmission) rgb += batch_get3(emissive, f);
+      out.set(0, f, glm::vec4(rgb, albedo[3][f]));
     }
   }
 };
@@ -143,22 +161,29 @@ class UniversalAlphaClipShader final : public FragmentShader {
  public:
   explicit UniversalAlphaClipShader(const UniversalSurfaceParams& params) : p_(params) {}
   bool may_discard() const override { return true; }
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    float alpha[kQuadLanes];
-    surface_alpha(p_, quad, alpha);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (quad.lane_active(lane) && alpha[lane] < p_.alpha_cutoff) out.discard(lane);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    alignas(64) float alpha[kBatchFragments];
+    surface_alpha(p_, batch, alpha);
+    discard_below_cutoff(p_, batch, alpha, out);
+  }
+  // The base colour's alpha of quads < quad_count, texture read per quad.
+  static void surface_alpha(const UniversalSurfaceParams& p, const FragmentBatch& batch,
+                            float alpha[kBatchFragments]) {
+    for (int f = 0; f < batch.fragment_count(); ++f) alpha[f] = p.base_color.w;
+    if constexpr (kBaseMap) {
+      for (int q = 0; q < batch.quad_count; ++q) {
+        glm::vec2 uv[kQuadLanes];
+        batch_quad_uv(batch, MeshVertexShader::kUv, q, uv);
+        glm::vec4 texel[kQuadLanes];
+        p.base_map->sample_quad(p.base_sampler, uv, texel);
+        for (int lane = 0; lane < kQuadLanes; ++lane) alpha[q * kQuadLanes + lane] *= texel[lane].w;
+      }
     }
   }
-  static void surface_alpha(const UniversalSurfaceParams& p, const QuadFragment& quad,
-                            float alpha[kQuadLanes]) {
-    for (int lane = 0; lane < kQuadLanes; ++lane) alpha[lane] = p.base_color.w;
-    if constexpr (kBaseMap) {
-      glm::vec2 uv[kQuadLanes];
-      for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = quad.var2(MeshVertexShader::kUv, lane);
-      glm::vec4 texel[kQuadLanes];
-      p.base_map->sample_quad(p.base_sampler, uv, texel);
-      for (int lane = 0; lane < kQuadLanes; ++lane) alpha[lane] *= texel[lane].w;
+  static void discard_below_cutoff(const UniversalSurfaceParams& p, const FragmentBatch& batch,
+                                   const float alpha[kBatchFragments], BatchOutput& out) {
+    for (int f = 0; f < batch.fragment_count(); ++f) {
+      if (batch.active(f) && alpha[f] < p.alpha_cutoff) out.discard(f);
     }
   }
 
@@ -174,20 +199,18 @@ class UniversalDepthNormalsShader final : public FragmentShader {
   UniversalDepthNormalsShader(const UniversalSurfaceParams& params, const glm::mat3& world_to_view)
       : p_(params), world_to_view_(world_to_view) {}
   bool may_discard() const override { return kAlphaTest; }
-  void shade(const QuadFragment& quad, QuadOutput& out) const override {
-    float alpha[kQuadLanes] = {};
-    if constexpr (kAlphaTest) UniversalAlphaClipShader<kBaseMap>::surface_alpha(p_, quad, alpha);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!quad.lane_active(lane)) continue;
-      if constexpr (kAlphaTest) {
-        if (alpha[lane] < p_.alpha_cutoff) {
-          out.discard(lane);
-          continue;
-        }
-      }
-      const glm::vec3 world_normal = toon_unit_normal(quad.var3(MeshVertexShader::kNormal, lane), quad.front_facing);
-      const glm::vec3 view_normal = toon_unit_normal(world_to_view_ * world_normal, true);
-      out.color[0][lane] = encode_view_normal(view_normal, NormalEncoding::Unorm);
+  void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    if constexpr (kAlphaTest) {
+      alignas(64) float alpha[kBatchFragments];
+      UniversalAlphaClipShader<kBaseMap>::surface_alpha(p_, batch, alpha);
+      UniversalAlphaClipShader<kBaseMap>::discard_below_cutoff(p_, batch, alpha, out);
+    }
+    const int count = batch.fragment_count();
+    alignas(64) BatchVec3 world_normal;
+    batch_unit_normals(batch, MeshVertexShader::kNormal, count, world_normal);
+    for (int f = 0; f < count; ++f) {
+      const glm::vec3 view_normal = toon_unit_normal(world_to_view_ * batch_get3(world_normal, f), true);
+      out.set(0, f, encode_view_normal(view_normal, NormalEncoding::Unorm));
     }
   }
 
