@@ -357,4 +357,40 @@ glm::vec4 quantize_pixel(PixelFormat format, glm::vec4 v) {
   return {0.0f, 0.0f, 0.0f, 1.0f};
 }
 
+void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
+  switch (format) {
+    case PixelFormat::RGBA8_SRGB: {
+      const Srgb8Tables& srgb = srgb8_tables();
+      const std::array<float, 256>& unorm = unorm8_decode_table();
+      for (int i = 0; i < count; ++i) {
+        r[i] = srgb.decode[srgb8_code(srgb, r[i])];
+        g[i] = srgb.decode[srgb8_code(srgb, g[i])];
+        b[i] = srgb.decode[srgb8_code(srgb, b[i])];
+        a[i] = unorm[float_to_unorm(a[i], 8)];
+      }
+      return;
+    }
+    case PixelFormat::RGBA8_UNORM: {
+      const std::array<float, 256>& unorm = unorm8_decode_table();
+      for (int i = 0; i < count; ++i) {
+        r[i] = unorm[float_to_unorm(r[i], 8)];
+        g[i] = unorm[float_to_unorm(g[i], 8)];
+        b[i] = unorm[float_to_unorm(b[i], 8)];
+        a[i] = unorm[float_to_unorm(a[i], 8)];
+      }
+      return;
+    }
+    case PixelFormat::RGBA32_FLOAT:
+      return;
+    default:
+      for (int i = 0; i < count; ++i) {
+        const glm::vec4 q = quantize_pixel(format, {r[i], g[i], b[i], a[i]});
+        r[i] = q.x;
+        g[i] = q.y;
+        b[i] = q.z;
+        a[i] = q.w;
+      }
+  }
+}
+
 }  // namespace ontile

@@ -43,6 +43,9 @@ void encode_pixel(PixelFormat format, glm::vec4 value, uint8_t* dst);
 glm::vec4 decode_pixel(PixelFormat format, const uint8_t* src);
 // decode_pixel(encode_pixel(value)) bit for bit, without the byte round trip.
 glm::vec4 quantize_pixel(PixelFormat format, glm::vec4 value);
+// quantize_pixel on `count` values held as structure-of-arrays channels, in place: one format
+// dispatch for a whole batch of shaded fragments.
+void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count);
 
 // --- Scalar conversions shared with textures and image IO -------------------------------------
 

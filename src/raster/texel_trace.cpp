@@ -3,8 +3,8 @@
 
 namespace ontile {
 namespace texel_trace_detail {
-thread_local std::vector<uint64_t>* sink = nullptr;
-thread_local uint64_t last_granule = ~uint64_t{0};
+constinit thread_local std::vector<uint64_t>* sink = nullptr;
+constinit thread_local uint64_t last_granule = ~uint64_t{0};
 }  // namespace texel_trace_detail
 
 TexelTraceScope::TexelTraceScope(std::vector<uint64_t>* granules)

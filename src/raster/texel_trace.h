@@ -22,8 +22,9 @@ class TexelTraceScope {
 };
 
 namespace texel_trace_detail {
-extern thread_local std::vector<uint64_t>* sink;
-extern thread_local uint64_t last_granule;
+// constinit: no dynamic initialisation, so reads need no TLS wrapper call per texel.
+extern thread_local constinit std::vector<uint64_t>* sink;
+extern thread_local constinit uint64_t last_granule;
 }  // namespace texel_trace_detail
 
 // Records the texel at `byte_address` (called by Texture2D for every texel it reads).

@@ -178,6 +178,93 @@ float quad_lambda(const glm::vec2 uv[4], int width, int height, float lod_bias) 
   return std::log2(rho) + lod_bias;  // rho = 0 -> -inf -> magnification
 }
 
+// The hot path of textured shading: bilinear (and trilinear) filtering of an 8-bit level for
+// the 4 lanes of a quad. Same arithmetic, same texel order and same trace as sample_level
+// (tested bit for bit), with the texel trace kept in locals and the in-range wrap case first.
+class Linear8Sampler {
+ public:
+  Linear8Sampler(const TexelDecoder& decoder, const SamplerDesc& sampler)
+      : rgb_(decoder.rgb), alpha_(decoder.alpha), sampler_(sampler),
+        sink_(decoder.trace ? texel_trace_detail::sink : nullptr),
+        last_(texel_trace_detail::last_granule) {}
+  ~Linear8Sampler() { texel_trace_detail::last_granule = last_; }
+
+  glm::vec4 sample(const Texture2D::Level& level, glm::vec2 uv) {
+    const int w = level.width, h = level.height;
+    const float x = texel_coord(uv.x, w, sampler_.wrap_u, 0.5f);
+    const float y = texel_coord(uv.y, h, sampler_.wrap_v, 0.5f);
+    const float x_floor = std::floor(x), y_floor = std::floor(y);
+    const float a = x - x_floor, b = y - y_floor;
+    const int i0 = static_cast<int>(x_floor), j0 = static_cast<int>(y_floor);
+    int xa = i0, xb = i0 + 1, ya = j0, yb = j0 + 1;
+    if (static_cast<unsigned>(i0) >= static_cast<unsigned>(w - 1)) {
+      xa = wrap_texel_index(i0, w, sampler_.wrap_u);
+      xb = wrap_texel_index(i0 + 1, w, sampler_.wrap_u);
+    }
+    if (static_cast<unsigned>(j0) >= static_cast<unsigned>(h - 1)) {
+      ya = wrap_texel_index(j0, h, sampler_.wrap_v);
+      yb = wrap_texel_index(j0 + 1, h, sampler_.wrap_v);
+    }
+    const size_t row_a = static_cast<size_t>(ya) * w, row_b = static_cast<size_t>(yb) * w;
+    const glm::vec4 t00 = load(level, row_a + xa);
+    const glm::vec4 t10 = load(level, row_a + xb);
+    const glm::vec4 t01 = load(level, row_b + xa);
+    const glm::vec4 t11 = load(level, row_b + xb);
+    const glm::vec4 top = t00 * (1.0f - a) + t10 * a;
+    const glm::vec4 bottom = t01 * (1.0f - a) + t11 * a;
+    return top * (1.0f - b) + bottom * b;
+  }
+
+ private:
+  glm::vec4 load(const Texture2D::Level& level, size_t texel) {
+    if (sink_) {
+      const uint64_t granule = (level.address + texel * level.memory_bytes_per_texel) >> 6;
+      if (granule != last_) {
+        sink_->push_back(granule);
+        last_ = granule;
+      }
+    }
+    const uint8_t* p = level.texels8.data() + texel * kChannels;
+    return {rgb_[p[0]], rgb_[p[1]], rgb_[p[2]], alpha_[p[3]]};
+  }
+
+  const float* rgb_;
+  const float* alpha_;
+  const SamplerDesc& sampler_;
+  std::vector<uint64_t>* sink_;
+  uint64_t last_;
+};
+
+// sample_with_lambda for 8-bit textures whose filters are all Linear (the common sampler).
+void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
+                         const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
+                         glm::vec4 out[4]) {
+  Linear8Sampler s(decoder, sampler);
+  const float max_level = static_cast<float>(levels.size() - 1);
+  if (!(lambda > 0.0f) || sampler.mipmap_mode == MipmapMode::None) {
+    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[0], uv[lane]);
+    return;
+  }
+  lambda = std::min(lambda, max_level);
+  if (sampler.mipmap_mode == MipmapMode::Nearest) {
+    const int d = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[d], uv[lane]);
+    return;
+  }
+  const float d1_float = std::floor(lambda);
+  const int d1 = static_cast<int>(d1_float);
+  const float blend = lambda - d1_float;
+  for (int lane = 0; lane < 4; ++lane) {
+    const glm::vec4 s1 = s.sample(levels[d1], uv[lane]);
+    if (blend == 0.0f) {
+      out[lane] = s1;
+      continue;
+    }
+    const glm::vec4 s2 = s.sample(levels[d1 + 1], uv[lane]);
+    out[lane] = s1 * (1.0f - blend) + s2 * blend;
+  }
+}
+
 template <bool kFloat>
 void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
                        const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4]) {
@@ -186,6 +273,12 @@ void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelD
     finite_uv[lane] = {finite_or_zero(uv[lane].x), finite_or_zero(uv[lane].y)};
   }
   const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
+  if constexpr (!kFloat) {
+    if (sampler.mag_filter == FilterMode::Linear && sampler.min_filter == FilterMode::Linear) {
+      sample_quad_linear8(levels, decoder, sampler, finite_uv, lambda, out);
+      return;
+    }
+  }
   for (int lane = 0; lane < 4; ++lane) {
     out[lane] = sample_with_lambda<kFloat>(levels, decoder, sampler, finite_uv[lane], lambda);
   }

@@ -92,9 +92,13 @@ class LambertShader final : public FragmentShader {
     for (int f = 0; f < n; ++f) {
       const float len = std::sqrt(nx[f] * nx[f] + ny[f] * ny[f] + nz[f] * nz[f]);
       const bool has_length = len > 0.0f;
-      const float x = (has_length ? nx[f] / len : 0.0f) * facing;
-      const float y = (has_length ? ny[f] / len : 0.0f) * facing;
-      const float z = (has_length ? nz[f] / len : 1.0f) * facing;
+      // Divide unconditionally (by 1 where the length is 0), then select: no branches, so the
+      // loop runs on SIMD lanes.
+      const float divisor = has_length ? len : 1.0f;
+      const float qx = nx[f] / divisor, qy = ny[f] / divisor, qz = nz[f] / divisor;
+      const float x = (has_length ? qx : 0.0f) * facing;
+      const float y = (has_length ? qy : 0.0f) * facing;
+      const float z = (has_length ? qz : 1.0f) * facing;
       const float dot = x * l.x + y * l.y + z * l.z;
       const float n_dot_l = dot > 0.0f ? dot : 0.0f;
       r[f] = albedo[0][f] * (ambient.x + radiance.x * n_dot_l) + emissive[0][f];

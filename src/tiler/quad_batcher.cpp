@@ -64,6 +64,7 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
   first_cell_y_ = first_cell_y;
   cell_depth_ = cell_depth;
   queued_ = 0;
+  opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
 }
 
 void QuadBatcher::flush() {
@@ -141,6 +142,15 @@ void QuadBatcher::shade_invocation(int inv) {
   }
   out.discard_mask = 0;
   ctx.draw.fragment_shader->shade_batch(b, out);
+  // Opaque writes do not depend on the destination: quantise the whole batch per output in one
+  // pass (the same values write_back would compute one by one).
+  if (opaque_writes_) {
+    for (int k = 0; k < b.color_output_count; ++k) {
+      const PixelFormat format = ctx.pass.attachments[ctx.subpass.color_outputs[k]].format;
+      quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
+                      b.fragment_count());
+    }
+  }
   for (int q = 0; q < queued_; ++q) {
     const int slot = slot_[inv][q];
     if (slot < 0) continue;
@@ -215,8 +225,12 @@ void QuadBatcher::write_back(int q) {
         for (size_t k = 0; k < outputs.size(); ++k) {
           const int a = outputs[k];
           glm::vec4& dst = memory_->color_plane(a)[i];
-          dst = quantize_pixel(ctx.pass.attachments[a].format,
-                               blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f), dst));
+          if (opaque_writes_) {
+            dst = out.get(static_cast<int>(k), f);
+          } else {
+            dst = quantize_pixel(ctx.pass.attachments[a].format,
+                                 blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f), dst));
+          }
         }
       }
       ++counters_->samples_written;

@@ -93,6 +93,7 @@ class QuadBatcher {
   const CellState* cells_ = nullptr;
   int cells_x_ = 0, first_cell_x_ = 0, first_cell_y_ = 0;
   const float* cell_depth_ = nullptr;
+  bool opaque_writes_ = false;  // blending is a plain overwrite: outputs are quantised per batch
   QueuedQuad queue_[kBatchQuads];
   int queued_ = 0;
   int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1

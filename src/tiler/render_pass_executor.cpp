@@ -208,7 +208,8 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   tbb::parallel_for(0, grid.tile_count(), [&](int tile) {
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
-    execute_tile(pass, params, tile, memory, counters.local(), traces[tile], imr);
+    execute_tile(pass, params, tile, memory, counters.local(), traces[tile], imr,
+                 config.hierarchical_z);
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);

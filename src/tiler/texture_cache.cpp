@@ -9,6 +9,8 @@
 
 #include "util/error.h"
 
+static_assert(ontile::TextureCache::kRegionShiftGranules == ontile::Texture2D::kTextureIdShift - 6);
+
 namespace ontile {
 namespace {
 
@@ -66,36 +68,29 @@ bool TextureCache::access(uint64_t granule) {
   return hit;
 }
 
-uint64_t TextureCache::frame_granule(uint64_t traced_granule) {
-  constexpr int kIdShift = Texture2D::kTextureIdShift - 6;  // granules are bytes / 64
-  const uint64_t id = traced_granule >> kIdShift;
-  if (id == 0) return traced_granule;
+uint64_t TextureCache::frame_base_granule(uint64_t id) {
+  if (id == last_id_) return last_base_granule_;
   auto it = frame_base_granule_.find(id);
   if (it == frame_base_granule_.end()) {
     // Frame-local placement starts above the id-0 range so the two never overlap.
-    if (next_frame_granule_ == 0) next_frame_granule_ = uint64_t{1} << kIdShift;
+    if (next_frame_granule_ == 0) next_frame_granule_ = uint64_t{1} << kRegionShiftGranules;
     it = frame_base_granule_.emplace(id, next_frame_granule_).first;
     next_frame_granule_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
   }
-  return it->second + (traced_granule & ((uint64_t{1} << kIdShift) - 1));
+  last_id_ = id;
+  last_base_granule_ = it->second;
+  return it->second;
 }
 
-// Tiles in index order, each tile's granules in the order its fetches touched them: the same
-// sequence whatever thread ran each tile, so the counts are deterministic.
-TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
-  TextureTraffic traffic;
-  for (const TileTrace& trace : traces) {
-    for (const uint64_t granule : trace.texture_granules) {
-      ++traffic.accesses;
-      if (cache.access(cache.frame_granule(granule))) {
-        ++traffic.hits;
-      } else {
-        ++traffic.misses;
-      }
-    }
-  }
-  traffic.bytes_read = traffic.misses * cache.config().line_bytes;
-  return traffic;
+uint64_t TextureCache::frame_granule(uint64_t traced_granule) {
+  const uint64_t id = traced_granule >> kRegionShiftGranules;
+  if (id == 0) return traced_granule;
+  return frame_base_granule(id) + (traced_granule & ((uint64_t{1} << kRegionShiftGranules) - 1));
+}
+
+uint32_t TextureCache::set_of(uint64_t frame_granule) const {
+  const uint64_t line = frame_granule >> std::countr_zero(config_.line_bytes / kGranuleBytes);
+  return static_cast<uint32_t>(line % sets_);
 }
 
 }  // namespace ontile

@@ -32,7 +32,14 @@ class TextureCache {
   // space: each texture is placed, 4 KiB aligned, after the ones used before it in this frame.
   // Granules outside any texture region (id 0) are used as they are.
   uint64_t frame_granule(uint64_t traced_granule);
+  // The first frame granule of texture region `id` (placing it now if this is its first use).
+  uint64_t frame_base_granule(uint64_t id);
   const TextureCacheConfig& config() const { return config_; }
+  // The set a frame granule's line maps to: accesses to different sets never interact, so
+  // the replay hands disjoint groups of sets to different threads.
+  uint32_t set_of(uint64_t frame_granule) const;
+  uint32_t set_count() const { return sets_; }
+  static constexpr int kRegionShiftGranules = 34;  // Texture2D::kTextureIdShift - 6
 
  private:
   TextureCacheConfig config_;
@@ -40,6 +47,9 @@ class TextureCache {
   std::vector<uint64_t> tags_;  // sets_ x ways, each set most recently used first, ~0 = empty
   std::map<uint64_t, uint64_t> frame_base_granule_;  // texture id -> first granule this frame
   uint64_t next_frame_granule_ = 0;
+  // The last texture looked up: consecutive granules nearly always share a texture, so the map
+  // is searched only when the texture changes.
+  uint64_t last_id_ = 0, last_base_granule_ = 0;
 };
 
 // Feeds every tile's texture granules through the cache, tiles in index order.

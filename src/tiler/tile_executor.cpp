@@ -226,7 +226,7 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  bool record_fragment_accesses) {
+                  bool record_fragment_accesses, bool hierarchical_z) {
   const TexelTraceScope texel_trace(&trace.texture_granules);
   const TileGrid& grid = params.grid;
   TileRect rect;
@@ -259,9 +259,10 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
     const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
-    const TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
+    TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
                               rect, &fetch, ref,
                               record_fragment_accesses ? &trace.fragments : nullptr);
+    ctx.hiz_enabled = ctx.hiz_enabled && hierarchical_z;
     scratch.touched.clear();
     rasterize_cells(ctx, cells, memory, counters, scratch);
     if (scratch.touched.empty()) continue;

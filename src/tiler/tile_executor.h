@@ -9,9 +9,10 @@
 namespace ontile {
 
 // Texture fetches are traced into trace.texture_granules; with record_fragments every
-// fragment's colour/depth accesses go to trace.fragments (for the IMR model).
+// fragment's colour/depth accesses go to trace.fragments (for the IMR model). hierarchical_z
+// lets early-Z draws skip cells proven occluded (same results, less work).
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  bool record_fragment_accesses);
+                  bool record_fragment_accesses, bool hierarchical_z = true);
 
 }  // namespace ontile
