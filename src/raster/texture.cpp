@@ -11,6 +11,7 @@
 
 #include "raster/pixel_format.h"
 #include "raster/texel_trace.h"
+#include "raster/texture_quad_simd.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -236,24 +237,47 @@ class Linear8Sampler {
 };
 
 // sample_with_lambda for 8-bit textures whose filters are all Linear (the common sampler).
+// Quads whose footprints stay inside the texture run on SIMD lanes (texture_quad_simd.h, the
+// same bits); the others take the scalar path below.
 void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
                          const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
                          glm::vec4 out[4]) {
-  Linear8Sampler s(decoder, sampler);
+  QuadSample8 simd;
+  simd.uv = uv;
+  simd.wrap_u = sampler.wrap_u;
+  simd.wrap_v = sampler.wrap_v;
+  simd.rgb_decode = decoder.rgb;
+  simd.alpha_decode = decoder.alpha;
+  simd.trace = decoder.trace ? texel_trace_detail::sink : nullptr;
+  simd.last_granule = &texel_trace_detail::last_granule;
   const float max_level = static_cast<float>(levels.size() - 1);
-  if (!(lambda > 0.0f) || sampler.mipmap_mode == MipmapMode::None) {
-    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[0], uv[lane]);
+  const bool base_only = !(lambda > 0.0f) || sampler.mipmap_mode == MipmapMode::None;
+  if (!base_only) lambda = std::min(lambda, max_level);
+  int single_level = 0;
+  float d1_float = 0.0f, blend = 0.0f;
+  if (base_only) {
+    simd.levels[0] = &levels[0];
+  } else if (sampler.mipmap_mode == MipmapMode::Nearest) {
+    single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+    simd.levels[0] = &levels[single_level];
+  } else {
+    d1_float = std::floor(lambda);
+    blend = lambda - d1_float;
+    simd.levels[0] = &levels[static_cast<int>(d1_float)];
+    if (blend != 0.0f) {
+      simd.levels[1] = &levels[static_cast<int>(d1_float) + 1];
+      simd.level_count = 2;
+      simd.blend = blend;
+    }
+  }
+  if (sample_quad8_simd(simd, out)) return;
+
+  Linear8Sampler s(decoder, sampler);
+  if (base_only || sampler.mipmap_mode == MipmapMode::Nearest) {
+    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[single_level], uv[lane]);
     return;
   }
-  lambda = std::min(lambda, max_level);
-  if (sampler.mipmap_mode == MipmapMode::Nearest) {
-    const int d = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
-    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[d], uv[lane]);
-    return;
-  }
-  const float d1_float = std::floor(lambda);
   const int d1 = static_cast<int>(d1_float);
-  const float blend = lambda - d1_float;
   for (int lane = 0; lane < 4; ++lane) {
     const glm::vec4 s1 = s.sample(levels[d1], uv[lane]);
     if (blend == 0.0f) {
