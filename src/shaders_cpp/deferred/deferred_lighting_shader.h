@@ -47,9 +47,9 @@ class DeferredLightingShader final : public FragmentShader {
   // variant) and decoding per fragment, then the lights over the batch.
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int count = batch.fragment_count();
-    BrdfBatch brdf{};  // zero where nothing is lit, so the sums below stay defined
-    alignas(64) BatchVec3 normal, world, to_view;
-    alignas(64) BatchVec3 direct = {};
+    // Zero where nothing is lit: the lighting loops run over every lane and read them.
+    BrdfBatch brdf{};
+    alignas(64) BatchVec3 normal = {}, world = {}, to_view = {}, direct = {};
     uint64_t lit = 0;
     for (int f = 0; f < count; ++f) {
       if (!batch.active(f)) continue;

@@ -31,11 +31,16 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
                             const BatchVec3& world_position, const BatchVec3& to_view,
                             const FragmentBatch& batch, uint64_t lit, BatchVec3& sum) {
   const int count = batch.fragment_count();
-  for (int f = 0; f < count; ++f) {
-    if (!((lit >> f) & 1u)) continue;
-    batch_set3(sum, f, shade_ggx(brdf.at(f), batch_get3(n, f), batch_get3(to_view, f), lighting.sun_to_light,
-                                 lighting.sun_radiance));
+  alignas(64) int32_t lit_lanes[kBatchFragments], reached[kBatchFragments];
+  alignas(64) BatchVec3 to_light, radiance;
+  for (int f = 0; f < count; ++f) lit_lanes[f] = static_cast<int32_t>((lit >> f) & 1u);
+  for (int c = 0; c < 3; ++c) {
+    for (int f = 0; f < count; ++f) {
+      to_light[c][f] = lighting.sun_to_light[c];
+      radiance[c][f] = lighting.sun_radiance[c];
+    }
   }
+  shade_ggx(brdf, n, to_view, to_light, radiance, lit_lanes, 0, count, false, sum);
   int begin = 0;
   while (begin < count) {
     const std::span<const uint32_t> lights = lighting.grid.lights_at(batch.x_px(begin), batch.y_px(begin));
@@ -46,16 +51,8 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
       ++end;
     }
     for (const uint32_t index : lights) {
-      const PunctualLight& light = lighting.lights[index];
-      for (int f = begin; f < end; ++f) {
-        if (!((lit >> f) & 1u)) continue;
-        glm::vec3 to_light, radiance;
-        if (light_incidence(light, batch_get3(world_position, f), to_light, radiance)) {
-          const glm::vec3 reflected =
-              shade_ggx(brdf.at(f), batch_get3(n, f), batch_get3(to_view, f), to_light, radiance);
-          batch_set3(sum, f, batch_get3(sum, f) + reflected);
-        }
-      }
+      light_incidence(lighting.lights[index], world_position, lit_lanes, begin, end, to_light, radiance, reached);
+      shade_ggx(brdf, n, to_view, to_light, radiance, reached, begin, end, true, sum);
     }
     begin = end;
   }
