@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 
 #include "raster/cell_raster.h"
@@ -36,13 +37,18 @@ uint64_t mask_bits(D d, M m) {
   return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
 }
 
-// Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < edges. The caller
-// guarantees every partial sum fits int32.
-uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, int edges) {
+// Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < edges, for bits in
+// [first_bit, end_bit) (others may be set or not). The caller guarantees every partial sum
+// fits int32.
+uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, int edges,
+                        int first_bit, int end_bit) {
   const hn::ScalableTag<int32_t> d;
   const size_t n = hn::Lanes(d);
   uint64_t bits = 0;
-  for (size_t i = 0; i < kCellPixels; i += n) {
+  // Only the rows holding valid pixels (a small triangle touches a row or two of a cell).
+  const size_t begin = static_cast<size_t>(first_bit) / n * n;
+  const size_t end = std::min<size_t>((static_cast<size_t>(end_bit) + n - 1) / n * n, kCellPixels);
+  for (size_t i = begin; i < end; i += n) {
     const auto lx = hn::Load(d, kCellLx + i);
     const auto ly = hn::Load(d, kCellLy + i);
     // The sign bit of the OR is set iff some edge value is negative.
@@ -238,6 +244,8 @@ CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int
     partial[partial_count++] = &e;
     int32_ok = int32_ok && std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
   }
+  const int first_bit = std::countr_zero(valid) / kCellSizePx * kCellSizePx;
+  const int end_bit = (kCellPixels - 1 - std::countl_zero(valid)) / kCellSizePx * kCellSizePx + kCellSizePx;
   CellMask any = 0;
   for (int s = 0; s < pattern.count; ++s) {
     CellMask bits = ~CellMask{0};
@@ -248,7 +256,7 @@ CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int
         a[k] = static_cast<int32_t>(partial[k]->a * kSubpixelScale);
         b[k] = static_cast<int32_t>(partial[k]->b * kSubpixelScale);
       }
-      bits = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, a, b, partial_count);
+      bits = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, a, b, partial_count, first_bit, end_bit);
     } else if (partial_count > 0) {
       bits = coverage_int64(partial, partial_count, px0, py0, pattern.x[s], pattern.y[s]);
     }

@@ -12,6 +12,7 @@
 #include "raster/pixel_format.h"
 #include "raster/texel_trace.h"
 #include "raster/texture_quad_simd.h"
+#include "raster/texel_wrap.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -75,28 +76,6 @@ inline float texel_coord(float u, int size, WrapMode mode, float offset) {
   if (std::fabs(x) < kMaxExactTexelCoord) return x;
   if (mode == WrapMode::ClampToEdge) return std::copysign(kMaxExactTexelCoord, x);
   return std::fmod(x, static_cast<float>(mode == WrapMode::Repeat ? size : 2 * size));
-}
-
-// Integer texel index -> [0, size), Vulkan "Wrapping Operation".
-inline int wrap_texel_index(int i, int size, WrapMode mode) {
-  if (static_cast<unsigned>(i) < static_cast<unsigned>(size)) return i;  // common case
-  switch (mode) {
-    case WrapMode::Repeat: {
-      const int m = i % size;
-      return m < 0 ? m + size : m;
-    }
-    case WrapMode::ClampToEdge:
-      return i < 0 ? 0 : size - 1;
-    case WrapMode::MirroredRepeat: {
-      // (size - 1) - mirror((i mod 2*size) - size), mirror(n) = n >= 0 ? n : -(1 + n)
-      const int period = 2 * size;
-      int m = i % period;
-      if (m < 0) m += period;
-      const int n = m - size;
-      return (size - 1) - (n >= 0 ? n : -(1 + n));
-    }
-  }
-  return 0;
 }
 
 // One filtered sample of one level; uv must be finite.
@@ -237,8 +216,8 @@ class Linear8Sampler {
 };
 
 // sample_with_lambda for 8-bit textures whose filters are all Linear (the common sampler).
-// Quads whose footprints stay inside the texture run on SIMD lanes (texture_quad_simd.h, the
-// same bits); the others take the scalar path below.
+// Quads run on SIMD lanes (texture_quad_simd.h, the same bits); coordinates beyond 2^24 texels
+// take the scalar path below.
 void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
                          const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
                          glm::vec4 out[4]) {

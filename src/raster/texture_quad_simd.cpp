@@ -6,6 +6,7 @@
 #include <hwy/highway.h>
 
 #include "raster/texture_quad_simd.h"
+#include "raster/texel_wrap.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -22,7 +23,7 @@ struct Footprints {
 };
 
 // x = u * size - 0.5, i0 = floor(x), a = x - i0 (OpenGL 4.6 eq. 8.10), for one axis of one
-// level. False when a lane's footprint is not inside [0, size - 1] or |u|, |x| reach 2^24.
+// level. False when |u| or |x| reach 2^24 (the scalar path reduces those first).
 template <class D>
 bool axis(D d, const float* u, int size, int32_t* i0_out, float* a_out) {
   const hn::RebindToSigned<D> di;
@@ -33,10 +34,7 @@ bool axis(D d, const float* u, int size, int32_t* i0_out, float* a_out) {
     const auto x = hn::Sub(hn::Mul(uu, hn::Set(d, static_cast<float>(size))), hn::Set(d, 0.5f));
     if (!hn::AllTrue(d, hn::And(hn::Lt(hn::Abs(uu), limit), hn::Lt(hn::Abs(x), limit)))) return false;
     const auto x_floor = hn::Floor(x);
-    const auto i0 = hn::ConvertTo(di, x_floor);
-    const auto inside = hn::And(hn::Gt(i0, hn::Set(di, -1)), hn::Lt(i0, hn::Set(di, size - 1)));
-    if (!hn::AllTrue(di, inside)) return false;
-    hn::StoreU(i0, di, i0_out + i);
+    hn::StoreU(hn::ConvertTo(di, x_floor), di, i0_out + i);
     hn::StoreU(hn::Sub(x, x_floor), d, a_out + i);
   }
   return true;
@@ -64,8 +62,18 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
   for (int lane = 0; lane < kLanes; ++lane) {
     for (int l = 0; l < in.level_count; ++l) {
       const Texture2D::Level& level = *in.levels[l];
-      const size_t row = static_cast<size_t>(fp.j0[l][lane]) * level.width + fp.i0[l][lane];
-      const size_t taps[4] = {row, row + 1, row + level.width, row + level.width + 1};
+      const int w = level.width, h = level.height, i0 = fp.i0[l][lane], j0 = fp.j0[l][lane];
+      int xa = i0, xb = i0 + 1, ya = j0, yb = j0 + 1;
+      if (static_cast<unsigned>(i0) >= static_cast<unsigned>(w - 1)) {
+        xa = wrap_texel_index(i0, w, in.wrap_u);
+        xb = wrap_texel_index(i0 + 1, w, in.wrap_u);
+      }
+      if (static_cast<unsigned>(j0) >= static_cast<unsigned>(h - 1)) {
+        ya = wrap_texel_index(j0, h, in.wrap_v);
+        yb = wrap_texel_index(j0 + 1, h, in.wrap_v);
+      }
+      const size_t row_a = static_cast<size_t>(ya) * w, row_b = static_cast<size_t>(yb) * w;
+      const size_t taps[4] = {row_a + xa, row_a + xb, row_b + xa, row_b + xb};
       for (int t = 0; t < 4; ++t) {
         if (in.trace) {
           const uint64_t granule = (level.address + taps[t] * level.memory_bytes_per_texel) >> 6;

@@ -23,9 +23,8 @@ struct QuadSample8 {
   uint64_t* last_granule = nullptr;        // the trace's last granule (updated)
 };
 
-// Returns false, touching nothing, when a lane needs the general path (a bilinear footprint
-// crossing the texture's edge, or coordinates beyond 2^24 texels); the caller then samples the
-// quad with the scalar code.
+// Returns false, touching nothing, when a lane needs the general path (coordinates beyond 2^24
+// texels); the caller then samples the quad with the scalar code.
 bool sample_quad8_simd(const QuadSample8& in, glm::vec4 out[4]);
 
 }  // namespace ontile

@@ -110,7 +110,8 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
       const int cell = cj * cells.cells_x + ci;
       const int cx = cells.first_x + ci * kCellSizePx, cy = cells.first_y + cj * kCellSizePx;
       CellState& st = scratch.cells[cell];
-      const CellMask valid = cell_rect_mask(cx, cy, rect.x0, rect.y0, x_end, y_end);
+      // Pixels of the cell inside both the tile and the triangle's bounding box.
+      const CellMask valid = cell_rect_mask(cx, cy, std::max(rect.x0, t.min_x), std::max(rect.y0, t.min_y), x_end, y_end);
       st.covered_any = cell_coverage(t, ctx.pattern, cx, cy, valid, st.covered);
       if (!st.covered_any) continue;
       scratch.touched.push_back(cell);
