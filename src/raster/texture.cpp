@@ -176,20 +176,12 @@ class Linear8Sampler {
     const float x_floor = std::floor(x), y_floor = std::floor(y);
     const float a = x - x_floor, b = y - y_floor;
     const int i0 = static_cast<int>(x_floor), j0 = static_cast<int>(y_floor);
-    int xa = i0, xb = i0 + 1, ya = j0, yb = j0 + 1;
-    if (static_cast<unsigned>(i0) >= static_cast<unsigned>(w - 1)) {
-      xa = wrap_texel_index(i0, w, sampler_.wrap_u);
-      xb = wrap_texel_index(i0 + 1, w, sampler_.wrap_u);
-    }
-    if (static_cast<unsigned>(j0) >= static_cast<unsigned>(h - 1)) {
-      ya = wrap_texel_index(j0, h, sampler_.wrap_v);
-      yb = wrap_texel_index(j0 + 1, h, sampler_.wrap_v);
-    }
-    const size_t row_a = static_cast<size_t>(ya) * w, row_b = static_cast<size_t>(yb) * w;
-    const glm::vec4 t00 = load(level, row_a + xa);
-    const glm::vec4 t10 = load(level, row_a + xb);
-    const glm::vec4 t01 = load(level, row_b + xa);
-    const glm::vec4 t11 = load(level, row_b + xb);
+    size_t taps[4];
+    bilinear_footprint(i0, j0, w, h, sampler_.wrap_u, sampler_.wrap_v, taps);
+    const glm::vec4 t00 = load(level, taps[0]);
+    const glm::vec4 t10 = load(level, taps[1]);
+    const glm::vec4 t01 = load(level, taps[2]);
+    const glm::vec4 t11 = load(level, taps[3]);
     const glm::vec4 top = t00 * (1.0f - a) + t10 * a;
     const glm::vec4 bottom = t01 * (1.0f - a) + t11 * a;
     return top * (1.0f - b) + bottom * b;

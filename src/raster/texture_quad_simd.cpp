@@ -62,18 +62,9 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
   for (int lane = 0; lane < kLanes; ++lane) {
     for (int l = 0; l < in.level_count; ++l) {
       const Texture2D::Level& level = *in.levels[l];
-      const int w = level.width, h = level.height, i0 = fp.i0[l][lane], j0 = fp.j0[l][lane];
-      int xa = i0, xb = i0 + 1, ya = j0, yb = j0 + 1;
-      if (static_cast<unsigned>(i0) >= static_cast<unsigned>(w - 1)) {
-        xa = wrap_texel_index(i0, w, in.wrap_u);
-        xb = wrap_texel_index(i0 + 1, w, in.wrap_u);
-      }
-      if (static_cast<unsigned>(j0) >= static_cast<unsigned>(h - 1)) {
-        ya = wrap_texel_index(j0, h, in.wrap_v);
-        yb = wrap_texel_index(j0 + 1, h, in.wrap_v);
-      }
-      const size_t row_a = static_cast<size_t>(ya) * w, row_b = static_cast<size_t>(yb) * w;
-      const size_t taps[4] = {row_a + xa, row_a + xb, row_b + xa, row_b + xb};
+      size_t taps[4];
+      bilinear_footprint(fp.i0[l][lane], fp.j0[l][lane], level.width, level.height, in.wrap_u,
+                         in.wrap_v, taps);
       for (int t = 0; t < 4; ++t) {
         if (in.trace) {
           const uint64_t granule = (level.address + taps[t] * level.memory_bytes_per_texel) >> 6;
