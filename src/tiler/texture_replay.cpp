@@ -32,6 +32,23 @@ std::vector<uint64_t> ids_in_first_use_order(const std::vector<uint64_t>& granul
 }  // namespace
 
 TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
+  const uint32_t groups = std::min<uint32_t>(
+      std::max(1, tbb::this_task_arena::max_concurrency()), cache.set_count());
+  TextureTraffic traffic;
+  if (groups == 1) {  // one thread: a single pass, no copy of the frame's accesses
+    for (const TileTrace& trace : traces) {
+      for (const uint64_t granule : trace.texture_granules) {
+        ++traffic.accesses;
+        if (cache.access(cache.frame_granule(granule))) {
+          ++traffic.hits;
+        } else {
+          ++traffic.misses;
+        }
+      }
+    }
+    traffic.bytes_read = traffic.misses * cache.config().line_bytes;
+    return traffic;
+  }
   const int tiles = static_cast<int>(traces.size());
   // 1. Placement: distinct ids per tile in parallel, then assigned in tile order.
   std::vector<std::vector<uint64_t>> tile_ids(tiles);
@@ -63,8 +80,6 @@ TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<Tile
     }
   });
   // 3. LRU replay, sets partitioned among threads.
-  const uint32_t groups = std::min<uint32_t>(
-      std::max(1, tbb::this_task_arena::max_concurrency()), cache.set_count());
   std::vector<TextureTraffic> partial(groups);
   tbb::parallel_for(uint32_t{0}, groups, [&](uint32_t group) {
     TextureTraffic& traffic = partial[group];
@@ -78,7 +93,6 @@ TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<Tile
       }
     }
   });
-  TextureTraffic traffic;
   for (const TextureTraffic& p : partial) traffic.add(p);
   traffic.bytes_read = traffic.misses * cache.config().line_bytes;
   return traffic;
