@@ -290,11 +290,8 @@ void TrianglePlanes::at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const {
   out[2] = {static_cast<float>(z), static_cast<float>(z_dx_), static_cast<float>(z_dy_)};
 }
 
-void TrianglePlanes::depth_bounds(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1,
-                                  double& min_out, double& max_out) const {
-  CellPlane p[3];
-  at_cell(cell_x0, cell_y0, p);
-  const CellPlane& z = p[2];
+void cell_depth_bounds(const CellPlane& z, int cell_x0, int cell_y0, int x0, int y0, int x1,
+                       int y1, double& min_out, double& max_out) {
   // Sample offsets from the top-left pixel centre span [x0 - cell_x0 - 0.5, x1 - cell_x0 - 0.5].
   const double fx_lo = x0 - cell_x0 - 0.5, fx_hi = x1 - cell_x0 - 0.5;
   const double fy_lo = y0 - cell_y0 - 0.5, fy_hi = y1 - cell_y0 - 0.5;

@@ -44,16 +44,18 @@ class TrianglePlanes {
   // Planes anchored at the centre of the cell's top-left pixel: [0] lambda1, [1] lambda2,
   // [2] depth.
   void at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const;
-  // Bounds of the exact depth over the cell's sample area (pixel rect [x0, x1) x [y0, y1) in the
-  // cell) widened by the float evaluation's error bound (docs/rasterization.md), so every depth
-  // interpolate_cell_depth() returns for that area lies in [min_out, max_out] before clamping.
-  void depth_bounds(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1, double& min_out,
-                    double& max_out) const;
 
  private:
   const TriangleSetup& t_;
   double l1_dx_, l1_dy_, l2_dx_, l2_dy_, z_dx_, z_dy_;  // per pixel
 };
+
+// Bounds of the depth plane `depth` (from at_cell for the cell at cell_x0, cell_y0) over the
+// sample area of pixels [x0, x1) x [y0, y1), widened by the float evaluation's error bound
+// (docs/rasterization.md): every depth interpolate_cell_depth() returns there lies in
+// [min_out, max_out] before clamping.
+void cell_depth_bounds(const CellPlane& depth, int cell_x0, int cell_y0, int x0, int y0, int x1,
+                       int y1, double& min_out, double& max_out);
 
 // Depth of the plane at every pixel of a cell, at sample offset (sx, sy) in 1/256 px from the
 // pixel's top-left corner, clamped to [0, 1] (Vulkan clamps before the depth test): out[64],

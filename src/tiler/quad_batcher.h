@@ -62,7 +62,6 @@ struct CellState {
   CellMask covered[kMaxSamples] = {};
   CellMask passing[kMaxSamples] = {};
   CellPlane planes[3];  // lambda1, lambda2, depth at the cell's origin
-  bool hiz_rejected = false;
 };
 
 struct QueuedQuad {

@@ -119,13 +119,12 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
       planes.at_cell(cx, cy, st.planes);
       if (ctx.hiz_enabled) {
         double lo, hi;
-        planes.depth_bounds(cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
-                            std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), lo, hi);
+        cell_depth_bounds(st.planes[2], cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
+                          std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), lo, hi);
         if (scratch.hiz.rejects(cell, ctx.draw.raster.depth_compare, ctx.quantize_depth(lo),
                                 ctx.quantize_depth(hi))) {
           ++counters.cells_hiz_rejected;
           for (int s = 0; s < samples; ++s) st.passing[s] = 0;
-          st.hiz_rejected = true;
           if (!ctx.fragments) {  // nothing to record: count the cell's pixels and skip its quads
             counters.fragments_depth_rejected += std::popcount(st.covered_any);
             st.covered_any = 0;
@@ -133,7 +132,6 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
           continue;
         }
       }
-      st.hiz_rejected = false;
       // Depth at every sample position, then the depth test (and, for early Z, the write).
       const int cols = std::min(cx + kCellSizePx, rect.x0 + rect.width) - std::max(cx, rect.x0);
       const int rows = std::min(cy + kCellSizePx, rect.y0 + rect.height) - std::max(cy, rect.y0);
@@ -141,20 +139,16 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
       bool wrote = false;
       for (int s = 0; s < samples; ++s) {
         float* z = z_all + s * kCellPixels;
-        if (!st.covered[s]) {
-          st.passing[s] = 0;
+        // Without a depth attachment nothing reads the depth: every covered sample passes.
+        if (!ctx.has_depth || !st.covered[s]) {
+          st.passing[s] = st.covered[s];
           continue;
         }
         interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z);
         if (ctx.depth_unorm_bits) {
           for (int i = 0; i < kCellPixels; ++i) z[i] = ctx.quantize_depth(z[i]);
         }
-        if (!ctx.has_depth) {
-          st.passing[s] = st.covered[s];
-          continue;
-        }
-        // Cell-local pixel (lx, ly) of a cell cut by the tile's top/left edge never happens:
-        // tiles are aligned to their size, and a tile narrower than a cell starts the cut.
+        // A tile narrower than a cell (budget-reduced tiles) starts inside it at (lx0, ly0).
         const int lx0 = std::max(cx, rect.x0) - cx, ly0 = std::max(cy, rect.y0) - cy;
         float* stored = memory.depth_plane() + memory.index(cx + lx0 - rect.x0, cy + ly0 - rect.y0, s);
         const int shift = ly0 * kCellSizePx + lx0;
@@ -272,7 +266,6 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     if (ctx.late_z && ctx.depth_write && ctx.hiz_tracked) {
       for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
     }
-    for (int cell : scratch.touched) scratch.cells[cell].covered_any = 0;
   }
   store_tile(pass, rect, memory);
 }

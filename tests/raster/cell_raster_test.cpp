@@ -147,7 +147,7 @@ TEST(CellRaster, InterpolationErrorStaysWithinTheDocumentedBound) {
                               {vertex_values[t.vertex_order[0]], vertex_values[t.vertex_order[1]], vertex_values[t.vertex_order[2]]}, 1};
         interpolate_fragments(in, 16, depth, var, 16);
         double lo, hi;
-        planes.depth_bounds(cx, cy, cx, cy, cx + 8, cy + 2, lo, hi);
+        cell_depth_bounds(cp[2], cx, cy, cx, cy, cx + 8, cy + 2, lo, hi);
         for (int f = 0; f < 16; ++f) {
           const int64_t px = int64_t{cx + f % 8} * kSubpixelScale + 128, py = int64_t{cy + f / 8} * kSubpixelScale + 128;
           const double l1 = static_cast<double>(t.edge[1].at(px, py)) / t.area2;
