@@ -3,6 +3,8 @@
 // encode_pixel/decode_pixel use, minus the byte packing, so the two agree bit for bit.
 #include "raster/pixel_format.h"
 
+#include "raster/srgb8_tables.h"
+
 #include <bit>
 #include <cmath>
 #include <iterator>
@@ -49,49 +51,39 @@ double srgb_eotf(double encoded) {
   return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
 }
 
-// Encoding rounds the exact OETF to the nearest code. thresholds[c] is the smallest float whose
-// OETF reaches (c + 0.5) / 255 (the boundary between codes c and c + 1), so the code of x is the
-// number of thresholds <= x. To find it fast, bucket_start[] gives that count at the start of
-// each bucket of 2^-kBucketMantissaBits of an octave in [2^-13, 1); below 2^-13 every input
-// encodes to 0 (thresholds[0] ~ 1.5e-4 > 2^-13). Buckets are narrower than the spacing of
-// thresholds, so the final scan takes at most one step.
-constexpr int kBucketMantissaBits = 7;
-constexpr uint32_t kBucketLowestBits = 0x39000000u;  // 2^-13
-constexpr int kBucketCount = 13 << kBucketMantissaBits;
+}  // namespace
 
-struct Srgb8Tables {
-  std::array<float, 256> decode;
-  std::array<float, 256> thresholds;  // [255] = +Inf: never reached, keeps the compare in range
-  std::array<uint8_t, kBucketCount> bucket_start;
-  Srgb8Tables() {
-    for (int c = 0; c < 256; ++c) decode[c] = static_cast<float>(srgb_eotf(c / 255.0));
-    for (int c = 0; c < 255; ++c) {
-      const double boundary = srgb_eotf((c + 0.5) / 255.0);
-      float t = static_cast<float>(boundary);
-      if (static_cast<double>(t) < boundary) t = std::nextafter(t, 2.0f);
-      thresholds[c] = t;
-    }
-    thresholds[255] = std::numeric_limits<float>::infinity();
-    int code = 0;
-    for (int bucket = 0; bucket < kBucketCount; ++bucket) {
-      const float start = std::bit_cast<float>(kBucketLowestBits +
-                                               (uint32_t(bucket) << (23 - kBucketMantissaBits)));
-      while (thresholds[code] <= start) ++code;
-      bucket_start[bucket] = static_cast<uint8_t>(code);
-    }
+// See srgb8_tables.h: thresholds[c] is the smallest float whose OETF reaches (c + 0.5) / 255.
+Srgb8Tables::Srgb8Tables() {
+  for (int c = 0; c < 256; ++c) decode[c] = static_cast<float>(srgb_eotf(c / 255.0));
+  for (int c = 0; c < 255; ++c) {
+    const double boundary = srgb_eotf((c + 0.5) / 255.0);
+    float t = static_cast<float>(boundary);
+    if (static_cast<double>(t) < boundary) t = std::nextafter(t, 2.0f);
+    thresholds[c] = t;
   }
-};
+  thresholds[255] = std::numeric_limits<float>::infinity();
+  int code = 0;
+  for (int bucket = 0; bucket < kSrgb8BucketCount; ++bucket) {
+    const float start = std::bit_cast<float>(kSrgb8BucketLowestBits +
+                                             (uint32_t(bucket) << (23 - kSrgb8BucketMantissaBits)));
+    while (thresholds[code] <= start) ++code;
+    bucket_start[bucket] = code;
+  }
+}
 
 const Srgb8Tables& srgb8_tables() {
   static const Srgb8Tables tables;
   return tables;
 }
 
+namespace {
+
 uint8_t srgb8_code(const Srgb8Tables& tables, float linear) {
-  if (!(linear >= std::bit_cast<float>(kBucketLowestBits))) return 0;  // also NaN, negatives
+  if (!(linear >= std::bit_cast<float>(kSrgb8BucketLowestBits))) return 0;  // also NaN, negatives
   if (linear >= 1.0f) return 255;
   const uint32_t bucket =
-      (std::bit_cast<uint32_t>(linear) - kBucketLowestBits) >> (23 - kBucketMantissaBits);
+      (std::bit_cast<uint32_t>(linear) - kSrgb8BucketLowestBits) >> (23 - kSrgb8BucketMantissaBits);
   uint32_t code = tables.bucket_start[bucket];
   while (linear >= tables.thresholds[code]) ++code;
   return static_cast<uint8_t>(code);
@@ -355,42 +347,6 @@ glm::vec4 quantize_pixel(PixelFormat format, glm::vec4 v) {
       return {quantize_unorm(v.x, 16), quantize_unorm(v.y, 16), 0.0f, 1.0f};
   }
   return {0.0f, 0.0f, 0.0f, 1.0f};
-}
-
-void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
-  switch (format) {
-    case PixelFormat::RGBA8_SRGB: {
-      const Srgb8Tables& srgb = srgb8_tables();
-      const std::array<float, 256>& unorm = unorm8_decode_table();
-      for (int i = 0; i < count; ++i) {
-        r[i] = srgb.decode[srgb8_code(srgb, r[i])];
-        g[i] = srgb.decode[srgb8_code(srgb, g[i])];
-        b[i] = srgb.decode[srgb8_code(srgb, b[i])];
-        a[i] = unorm[float_to_unorm(a[i], 8)];
-      }
-      return;
-    }
-    case PixelFormat::RGBA8_UNORM: {
-      const std::array<float, 256>& unorm = unorm8_decode_table();
-      for (int i = 0; i < count; ++i) {
-        r[i] = unorm[float_to_unorm(r[i], 8)];
-        g[i] = unorm[float_to_unorm(g[i], 8)];
-        b[i] = unorm[float_to_unorm(b[i], 8)];
-        a[i] = unorm[float_to_unorm(a[i], 8)];
-      }
-      return;
-    }
-    case PixelFormat::RGBA32_FLOAT:
-      return;
-    default:
-      for (int i = 0; i < count; ++i) {
-        const glm::vec4 q = quantize_pixel(format, {r[i], g[i], b[i], a[i]});
-        r[i] = q.x;
-        g[i] = q.y;
-        b[i] = q.z;
-        a[i] = q.w;
-      }
-  }
 }
 
 }  // namespace ontile

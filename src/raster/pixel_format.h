@@ -46,6 +46,11 @@ glm::vec4 quantize_pixel(PixelFormat format, glm::vec4 value);
 // quantize_pixel on `count` values held as structure-of-arrays channels, in place: one format
 // dispatch for a whole batch of shaded fragments.
 void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count);
+// encode_pixel / decode_pixel on `count` consecutive pixels (a row of tile memory and of a
+// surface): the same bytes and values, one format dispatch per row and SIMD lanes for the 8-bit
+// and 32-bit float formats.
+void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t* dst);
+void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4* dst);
 
 // --- Scalar conversions shared with textures and image IO -------------------------------------
 

@@ -8,6 +8,8 @@
 #include "raster/texture_quad_simd.h"
 #include "raster/texel_wrap.h"
 
+#include <cstring>
+
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
 namespace HWY_NAMESPACE {
@@ -40,68 +42,170 @@ bool axis(D d, const float* u, int size, int32_t* i0_out, float* a_out) {
   return true;
 }
 
+// Texel indices of the footprints of one level for the 4 lanes, as t00, t10, t01, t11 per lane.
+// Footprints wholly inside the level (the common case) need no wrapping: rows and columns are
+// consecutive. Others go through bilinear_footprint, the scalar sampler's own function.
+// The two texel columns (or rows) of footprints starting at `first` along an axis of `size`
+// texels, wrapped as wrap_texel_index does: identity inside the level, a mask for repeat on a
+// power-of-two size, a clamp for clamp-to-edge. False when a lane needs another wrap (mirrored
+// repeat, or repeat on another size, outside the level): the caller takes the scalar path.
+template <class DI>
+bool wrap_axis(DI di, hn::Vec<DI> first, int size, WrapMode mode, hn::Vec<DI>& lo, hn::Vec<DI>& hi) {
+  const auto second = hn::Add(first, hn::Set(di, 1));
+  const auto last = hn::Set(di, size - 1);
+  if (mode == WrapMode::Repeat && (size & (size - 1)) == 0) {
+    lo = hn::And(first, last);  // two's complement: i mod 2^k for negative i too
+    hi = hn::And(second, last);
+    return true;
+  }
+  if (mode == WrapMode::ClampToEdge) {
+    lo = hn::Min(hn::Max(first, hn::Zero(di)), last);
+    hi = hn::Min(hn::Max(second, hn::Zero(di)), last);
+    return true;
+  }
+  const hn::RebindToUnsigned<DI> du;
+  // Unsigned compare: a negative index wraps to a huge value and fails too.
+  if (!hn::AllTrue(du, hn::Lt(hn::BitCast(du, first), hn::BitCast(du, last)))) return false;
+  lo = first;
+  hi = second;
+  return true;
+}
+
+// Texel indices of the footprints of one level for the 4 lanes, as t00, t10, t01, t11 per lane,
+// with the texels bilinear_footprint (the scalar sampler's function) selects.
+template <class DI>
+void footprint_taps(DI di, const Texture2D::Level& level, const int32_t* i0, const int32_t* j0,
+                    WrapMode wrap_u, WrapMode wrap_v, int32_t taps[4][kLanes]) {
+  const size_t n = hn::Lanes(di);
+  const auto row = hn::Set(di, level.width);
+  for (size_t i = 0; i < kLanes; i += n) {
+    hn::Vec<DI> xa, xb, ya, yb;
+    if (!wrap_axis(di, hn::LoadU(di, i0 + i), level.width, wrap_u, xa, xb) ||
+        !wrap_axis(di, hn::LoadU(di, j0 + i), level.height, wrap_v, ya, yb)) {
+      for (int lane = 0; lane < kLanes; ++lane) {
+        size_t t[4];
+        bilinear_footprint(i0[lane], j0[lane], level.width, level.height, wrap_u, wrap_v, t);
+        for (int k = 0; k < 4; ++k) taps[k][lane] = static_cast<int32_t>(t[k]);
+      }
+      return;
+    }
+    const auto row_a = hn::Mul(ya, row), row_b = hn::Mul(yb, row);
+    hn::StoreU(hn::Add(row_a, xa), di, taps[0] + i);
+    hn::StoreU(hn::Add(row_a, xb), di, taps[1] + i);
+    hn::StoreU(hn::Add(row_b, xa), di, taps[2] + i);
+    hn::StoreU(hn::Add(row_b, xb), di, taps[3] + i);
+  }
+}
+
+// Appends the quad's texel granules to the trace in the scalar sampler's order: lane by lane,
+// level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
+// Granules are computed on 64-bit lanes for 4-byte texels (every 8-bit texture).
+void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
+  alignas(32) uint64_t granule[2][4][kLanes];  // [level][tap][lane]
+  const hn::ScalableTag<uint64_t> d64;
+  const hn::Rebind<int64_t, decltype(d64)> ds64;
+  const hn::Rebind<int32_t, decltype(d64)> d32;
+  const size_t n = hn::Lanes(d64);
+  for (int l = 0; l < in.level_count; ++l) {
+    const Texture2D::Level& level = *in.levels[l];
+    for (int t = 0; t < 4; ++t) {
+      if (level.memory_bytes_per_texel == 4 && n <= kLanes) {
+        const auto base = hn::Set(d64, level.address);
+        for (size_t i = 0; i < kLanes; i += n) {
+          const auto texel = hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, taps[l][t] + i)));
+          hn::Store(hn::ShiftRight<6>(hn::Add(base, hn::ShiftLeft<2>(texel))), d64, granule[l][t] + i);
+        }
+        continue;
+      }
+      for (int lane = 0; lane < kLanes; ++lane) {
+        granule[l][t][lane] =
+            (level.address + static_cast<uint64_t>(taps[l][t][lane]) * level.memory_bytes_per_texel) >> 6;
+      }
+    }
+  }
+  uint64_t unique[2 * 4 * kLanes];
+  int count = 0;
+  uint64_t last = *in.last_granule;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    for (int l = 0; l < in.level_count; ++l) {
+      for (int t = 0; t < 4; ++t) {
+        const uint64_t g = granule[l][t][lane];
+        unique[count] = g;
+        count += g != last;
+        last = g;
+      }
+    }
+  }
+  in.trace->insert(in.trace->end(), unique, unique + count);
+  *in.last_granule = last;
+}
+
 bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
   const hn::CappedTag<float, kLanes> d;
-  const size_t n = hn::Lanes(d);
+  const hn::RebindToSigned<decltype(d)> di;
   float u[kLanes], v[kLanes];
   for (int lane = 0; lane < kLanes; ++lane) {
     u[lane] = in.uv[lane].x;
     v[lane] = in.uv[lane].y;
   }
   Footprints fp;
+  alignas(16) int32_t taps[2][4][kLanes];  // [level][tap][lane] texel index in the level
   for (int l = 0; l < in.level_count; ++l) {
     const Texture2D::Level& level = *in.levels[l];
+    // Texel indices are int32 lanes: a level of 2^31 texels or more (8 GiB) takes the scalar path.
+    if (static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height) >= (uint64_t{1} << 31)) {
+      return false;
+    }
     if (!axis(d, u, level.width, fp.i0[l], fp.a[l]) || !axis(d, v, level.height, fp.j0[l], fp.b[l])) {
       return false;
     }
+    footprint_taps(di, level, fp.i0[l], fp.j0[l], in.wrap_u, in.wrap_v, taps[l]);
   }
-  // Texels lane by lane, level by level, each footprint as t00, t10, t01, t11: the scalar
-  // sampler's order, so the trace (and the texture-cache counts) are the same.
-  alignas(16) float texel[2][4][4][kLanes];  // [level][tap][channel][lane]
-  uint64_t last = in.last_granule ? *in.last_granule : 0;
-  for (int lane = 0; lane < kLanes; ++lane) {
-    for (int l = 0; l < in.level_count; ++l) {
-      const Texture2D::Level& level = *in.levels[l];
-      size_t taps[4];
-      bilinear_footprint(fp.i0[l][lane], fp.j0[l][lane], level.width, level.height, in.wrap_u,
-                         in.wrap_v, taps);
-      for (int t = 0; t < 4; ++t) {
-        if (in.trace) {
-          const uint64_t granule = (level.address + taps[t] * level.memory_bytes_per_texel) >> 6;
-          if (granule != last) {
-            in.trace->push_back(granule);
-            last = granule;
-          }
-        }
-        const uint8_t* p = level.texels8.data() + taps[t] * 4;
-        texel[l][t][0][lane] = in.rgb_decode[p[0]];
-        texel[l][t][1][lane] = in.rgb_decode[p[1]];
-        texel[l][t][2][lane] = in.rgb_decode[p[2]];
-        texel[l][t][3][lane] = in.alpha_decode[p[3]];
+  if (in.trace) record_trace(in, taps);
+  // Texels: one 32-bit RGBA8 load per tap and lane, then each channel decoded through its table
+  // on the lanes at once.
+  alignas(16) int32_t packed[2][4][kLanes];  // [level][tap][lane]
+  for (int l = 0; l < in.level_count; ++l) {
+    const uint8_t* texels = in.levels[l]->texels8.data();
+    for (int t = 0; t < 4; ++t) {
+      for (int lane = 0; lane < kLanes; ++lane) {
+        std::memcpy(&packed[l][t][lane], texels + static_cast<size_t>(taps[l][t][lane]) * 4, 4);
       }
     }
   }
-  if (in.trace) *in.last_granule = last;
-  alignas(16) float result[4][kLanes];
+  const size_t n = hn::Lanes(d);
+  const auto byte_mask = hn::Set(di, 0xFF);
   const auto one = hn::Set(d, 1.0f);
+  alignas(16) float result[4][kLanes];
   for (size_t i = 0; i < kLanes; i += n) {
-    for (int c = 0; c < 4; ++c) {
-      hn::Vec<decltype(d)> level_value[2];
-      for (int l = 0; l < in.level_count; ++l) {
-        const auto a = hn::LoadU(d, fp.a[l] + i), b = hn::LoadU(d, fp.b[l] + i);
-        const auto one_a = hn::Sub(one, a), one_b = hn::Sub(one, b);
-        const auto top = hn::Add(hn::Mul(hn::LoadU(d, texel[l][0][c] + i), one_a),
-                                 hn::Mul(hn::LoadU(d, texel[l][1][c] + i), a));
-        const auto bottom = hn::Add(hn::Mul(hn::LoadU(d, texel[l][2][c] + i), one_a),
-                                    hn::Mul(hn::LoadU(d, texel[l][3][c] + i), a));
-        level_value[l] = hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, b));
+    hn::Vec<decltype(d)> level_value[2][4];  // [level][channel]
+    for (auto& level : level_value) {
+      for (auto& channel : level) channel = hn::Zero(d);  // level 1 stays unused with one level
+    }
+    for (int l = 0; l < in.level_count; ++l) {
+      hn::Vec<decltype(d)> tap_value[4][4];  // [tap][channel]
+      for (int t = 0; t < 4; ++t) {
+        const auto p = hn::Load(di, packed[l][t] + i);
+        tap_value[t][0] = hn::GatherIndex(d, in.rgb_decode, hn::And(p, byte_mask));
+        tap_value[t][1] = hn::GatherIndex(d, in.rgb_decode, hn::And(hn::ShiftRight<8>(p), byte_mask));
+        tap_value[t][2] = hn::GatherIndex(d, in.rgb_decode, hn::And(hn::ShiftRight<16>(p), byte_mask));
+        tap_value[t][3] = hn::GatherIndex(d, in.alpha_decode, hn::And(hn::ShiftRight<24>(p), byte_mask));
       }
-      auto value = level_value[0];
+      const auto a = hn::LoadU(d, fp.a[l] + i), b = hn::LoadU(d, fp.b[l] + i);
+      const auto one_a = hn::Sub(one, a), one_b = hn::Sub(one, b);
+      for (int c = 0; c < 4; ++c) {
+        const auto top = hn::Add(hn::Mul(tap_value[0][c], one_a), hn::Mul(tap_value[1][c], a));
+        const auto bottom = hn::Add(hn::Mul(tap_value[2][c], one_a), hn::Mul(tap_value[3][c], a));
+        level_value[l][c] = hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, b));
+      }
+    }
+    for (int c = 0; c < 4; ++c) {
+      auto value = level_value[0][c];
       if (in.level_count == 2) {
         const auto w = hn::Set(d, in.blend);
-        value = hn::Add(hn::Mul(level_value[0], hn::Sub(one, w)), hn::Mul(level_value[1], w));
+        value = hn::Add(hn::Mul(level_value[0][c], hn::Sub(one, w)), hn::Mul(level_value[1][c], w));
       }
-      hn::StoreU(value, d, result[c] + i);
+      hn::Store(value, d, result[c] + i);
     }
   }
   for (int lane = 0; lane < kLanes; ++lane) {

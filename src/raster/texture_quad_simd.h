@@ -24,7 +24,8 @@ struct QuadSample8 {
 };
 
 // Returns false, touching nothing, when a lane needs the general path (coordinates beyond 2^24
-// texels); the caller then samples the quad with the scalar code.
+// texels, or a level of 2^31 texels or more); the caller then samples the quad with the scalar
+// code.
 bool sample_quad8_simd(const QuadSample8& in, glm::vec4 out[4]);
 
 }  // namespace ontile

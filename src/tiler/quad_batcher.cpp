@@ -147,8 +147,9 @@ void QuadBatcher::shade_invocation(int inv) {
   if (opaque_writes_) {
     for (int k = 0; k < b.color_output_count; ++k) {
       const PixelFormat format = ctx.pass.attachments[ctx.subpass.color_outputs[k]].format;
+      // The padded count keeps every SIMD vector whole; padding lanes are never written back.
       quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
-                      b.fragment_count());
+                      padded);
     }
   }
   for (int q = 0; q < queued_; ++q) {
@@ -203,6 +204,10 @@ void QuadBatcher::write_back(int q) {
   }
   if (ctx.fragments) record_fragments(ctx, quad.qx, quad.qy, quad.coverage, passing);
   if (!passing) return;
+  if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_) {
+    write_back_single_sample(q);
+    return;
+  }
   const int samples = ctx.pattern.count;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
@@ -234,6 +239,27 @@ void QuadBatcher::write_back(int q) {
         }
       }
       ++counters_->samples_written;
+    }
+  }
+}
+
+// write_back for the common case: one sample per pixel, depth already written by early Z,
+// outputs already quantised per batch; each passing lane copies its outputs to tile memory.
+void QuadBatcher::write_back_single_sample(int q) {
+  const TriangleContext& ctx = *ctx_;
+  const QueuedQuad& quad = queue_[q];
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  const BatchOutput& out = *outputs_[0];
+  const int first = slot_[0][q] * kQuadLanes;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if (!lane_coverage(quad.passing, lane)) continue;
+    ++counters_->samples_written;
+    if (!ctx.write_color) continue;
+    const size_t i = memory_->index(quad.qx + (lane & 1) - ctx.rect.x0, quad.qy + (lane >> 1) - ctx.rect.y0, 0);
+    const int f = first + lane;
+    for (size_t k = 0; k < outputs.size(); ++k) {
+      memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
+                                             out.color[k][2][f], out.color[k][3][f]};
     }
   }
 }

@@ -85,6 +85,7 @@ class QuadBatcher {
  private:
   void shade_invocation(int invocation);
   void write_back(int q);
+  void write_back_single_sample(int q);
 
   const TriangleContext* ctx_ = nullptr;
   TileMemory* memory_ = nullptr;

@@ -30,6 +30,12 @@ class Surface {
     encode_pixel(format_, value, &bytes_[offset(x, y, sample)]);
   }
   void fill(const glm::vec4& value);
+  // The encoded bytes of (x, y, sample) and the pixels after it in the row (samples of a pixel
+  // are adjacent, pixels of a row follow each other): what row conversions read and write.
+  uint8_t* pixel_bytes(int x, int y, int sample = 0) { return &bytes_[offset(x, y, sample)]; }
+  const uint8_t* pixel_bytes(int x, int y, int sample = 0) const {
+    return &bytes_[offset(x, y, sample)];
+  }
 
  private:
   size_t offset(int x, int y, int sample) const {

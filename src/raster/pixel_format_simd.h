@@ -1,0 +1,20 @@
+// SIMD conversions of flat runs of channel values for the hot pixel formats (8-bit UNORM and
+// sRGB, n-bit UNORM), used by the row and batch functions of pixel_format.h. Each gives, value
+// by value, the bits of the scalar conversion in pixel_format.cpp on every SIMD target.
+#pragma once
+#include <cstdint>
+
+namespace ontile {
+
+// values[i] = unorm_to_float(float_to_unorm(values[i], bits), bits), bits in 1..24.
+void quantize_unorm_simd(float* values, int count, int bits);
+// values[i] = the decoded value of the sRGB code of values[i] (linear_to_srgb8, then decode).
+void quantize_srgb8_simd(float* values, int count);
+// dst[i] = float_to_unorm(values[i], 8).
+void encode_unorm8_simd(const float* values, int count, uint8_t* dst);
+// dst[i] = linear_to_srgb8(values[i]).
+void encode_srgb8_simd(const float* values, int count, uint8_t* dst);
+// dst[i] = table[src[i]] (a 256-entry decode table).
+void decode_table8_simd(const uint8_t* src, int count, const float* table, float* dst);
+
+}  // namespace ontile

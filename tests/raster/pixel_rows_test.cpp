@@ -1,0 +1,119 @@
+// The row and batch conversions (quantize_pixels, encode_pixels, decode_pixels) against the
+// per-pixel functions, bit for bit, for every format and on every SIMD target: values around
+// every 8-bit UNORM and sRGB rounding boundary, specials (NaN, +-Inf, -0, subnormals) and
+// random values, in runs whose lengths do not divide the vector width.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "raster/cell_raster.h"
+#include "raster/pixel_format.h"
+
+namespace ontile {
+namespace {
+
+constexpr PixelFormat kAllFormats[] = {
+    PixelFormat::RGBA8_UNORM,  PixelFormat::RGBA8_SRGB,   PixelFormat::RGB10A2_UNORM,
+    PixelFormat::RG11B10_FLOAT, PixelFormat::RGBA16_FLOAT, PixelFormat::RG16_FLOAT,
+    PixelFormat::R32_FLOAT,    PixelFormat::RGBA32_FLOAT, PixelFormat::D32_FLOAT,
+    PixelFormat::D24S8,        PixelFormat::D16_UNORM,    PixelFormat::RG16_UNORM};
+
+// Channel values that exercise every rounding boundary of the 8- and 10-bit encodings.
+std::vector<float> test_values() {
+  std::vector<float> v = {0.0f, -0.0f, 1.0f, -1.0f, 0.5f, 2.0f, 1e-30f, 1e-40f, -1e-40f,
+                          std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity(),
+                          std::nextafter(1.0f, 0.0f), std::nextafter(0.0f, 1.0f)};
+  for (int c = 0; c < 1024; ++c) {
+    for (const double denominator : {255.0, 1023.0}) {
+      const float boundary = static_cast<float>((c + 0.5) / denominator);
+      float x = boundary;
+      for (int k = 0; k < 3; ++k) x = std::nextafter(x, 0.0f);
+      for (int k = 0; k < 7; ++k, x = std::nextafter(x, 2.0f)) v.push_back(x);
+    }
+  }
+  // sRGB boundaries: the linear values where the code changes, found by encoding.
+  for (float x = 1.0f / 8192; x < 1.0f; x = std::nextafter(x * 1.0005f, 2.0f)) {
+    if (linear_to_srgb8(x) != linear_to_srgb8(std::nextafter(x, 0.0f))) {
+      float y = x;
+      for (int k = 0; k < 2; ++k) y = std::nextafter(y, 0.0f);
+      for (int k = 0; k < 5; ++k, y = std::nextafter(y, 2.0f)) v.push_back(y);
+    }
+  }
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
+  for (int i = 0; i < 20000; ++i) v.push_back(unit(rng));
+  return v;
+}
+
+bool same_bits(const glm::vec4& a, const glm::vec4& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
+
+struct AutomaticTargetOnExit {
+  ~AutomaticTargetOnExit() { force_simd_target(""); }
+};
+
+void check_format(PixelFormat format, const std::vector<float>& values) {
+  const int count = static_cast<int>(values.size() / 4) - 3;  // not a multiple of any width
+  std::vector<glm::vec4> pixels(count);
+  std::memcpy(pixels.data(), values.data(), sizeof(glm::vec4) * count);
+  // quantize_pixels (SoA) == quantize_pixel.
+  std::vector<float> r(count), g(count), b(count), a(count);
+  for (int i = 0; i < count; ++i) {
+    r[i] = pixels[i].x, g[i] = pixels[i].y, b[i] = pixels[i].z, a[i] = pixels[i].w;
+  }
+  quantize_pixels(format, r.data(), g.data(), b.data(), a.data(), count);
+  for (int i = 0; i < count; ++i) {
+    const glm::vec4 expected = quantize_pixel(format, pixels[i]);
+    ASSERT_TRUE(same_bits(expected, glm::vec4(r[i], g[i], b[i], a[i])))
+        << format_name(format) << " quantize, value " << i << ": " << pixels[i].x << " "
+        << pixels[i].y << " " << pixels[i].z << " " << pixels[i].w;
+  }
+  // encode_pixels == encode_pixel, and decode_pixels == decode_pixel on the bytes.
+  const int bytes = bytes_per_pixel(format);
+  std::vector<uint8_t> row(static_cast<size_t>(count) * bytes), expected(row.size());
+  encode_pixels(format, pixels.data(), count, row.data());
+  for (int i = 0; i < count; ++i) encode_pixel(format, pixels[i], expected.data() + bytes * i);
+  for (int i = 0; i < count; ++i) {
+    ASSERT_EQ(0, std::memcmp(row.data() + bytes * i, expected.data() + bytes * i, bytes))
+        << format_name(format) << " encode, value " << i << ": " << pixels[i].x;
+  }
+  std::vector<glm::vec4> decoded(count);
+  decode_pixels(format, row.data(), count, decoded.data());
+  for (int i = 0; i < count; ++i) {
+    ASSERT_TRUE(same_bits(decode_pixel(format, row.data() + bytes * i), decoded[i]))
+        << format_name(format) << " decode, pixel " << i;
+  }
+}
+
+TEST(PixelRows, MatchPerPixelConversionsOnEveryTarget) {
+  const std::vector<float> values = test_values();
+  const AutomaticTargetOnExit restore;
+  for (const std::string& target : simd_targets()) {
+    SCOPED_TRACE(target);
+    force_simd_target(target);
+    for (const PixelFormat format : kAllFormats) check_format(format, values);
+  }
+}
+
+// Every byte of every 8-bit channel decodes and re-encodes to itself through the rows.
+TEST(PixelRows, EightBitRoundTripIsExact) {
+  std::vector<uint8_t> bytes(256 * 4);
+  for (int i = 0; i < 256 * 4; ++i) bytes[i] = static_cast<uint8_t>(i / 4);
+  for (const PixelFormat format : {PixelFormat::RGBA8_UNORM, PixelFormat::RGBA8_SRGB}) {
+    std::vector<glm::vec4> decoded(256);
+    decode_pixels(format, bytes.data(), 256, decoded.data());
+    std::vector<uint8_t> again(bytes.size());
+    encode_pixels(format, decoded.data(), 256, again.data());
+    EXPECT_EQ(bytes, again) << format_name(format);
+  }
+}
+
+}  // namespace
+}  // namespace ontile
