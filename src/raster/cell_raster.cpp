@@ -172,6 +172,39 @@ CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, fl
   return passing;
 }
 
+// Minimum and maximum of `rows` rows of `count` floats, `stride` apart, with the scalar
+// semantics lo = x < lo ? x : lo (starting from first[0]), lane by lane: the same value whatever
+// the order (up to the sign of a zero, which no depth compare can see).
+void DepthRangeKernel(const float* first, int stride, int count, int rows, float* lo_out,
+                      float* hi_out) {
+  const hn::ScalableTag<float> d;
+  const size_t n = hn::Lanes(d);
+  float lo = first[0], hi = first[0];
+  auto vlo = hn::Set(d, lo), vhi = hn::Set(d, hi);
+  for (int r = 0; r < rows; ++r) {
+    const float* row = first + static_cast<size_t>(r) * stride;
+    size_t i = 0;
+    for (; i + n <= static_cast<size_t>(count); i += n) {
+      const auto x = hn::LoadU(d, row + i);
+      vlo = hn::IfThenElse(hn::Lt(x, vlo), x, vlo);
+      vhi = hn::IfThenElse(hn::Gt(x, vhi), x, vhi);
+    }
+    for (; i < static_cast<size_t>(count); ++i) {
+      lo = row[i] < lo ? row[i] : lo;
+      hi = row[i] > hi ? row[i] : hi;
+    }
+  }
+  alignas(64) float lanes_lo[hn::MaxLanes(d)], lanes_hi[hn::MaxLanes(d)];
+  hn::Store(vlo, d, lanes_lo);
+  hn::Store(vhi, d, lanes_hi);
+  for (size_t i = 0; i < n; ++i) {
+    lo = lanes_lo[i] < lo ? lanes_lo[i] : lo;
+    hi = lanes_hi[i] > hi ? lanes_hi[i] : hi;
+  }
+  *lo_out = lo;
+  *hi_out = hi;
+}
+
 const char* TargetNameKernel() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace HWY_NAMESPACE
@@ -185,6 +218,7 @@ HWY_EXPORT(CoverageKernel);
 HWY_EXPORT(CellDepthKernel);
 HWY_EXPORT(InterpolateKernel);
 HWY_EXPORT(DepthTestKernel);
+HWY_EXPORT(DepthRangeKernel);
 HWY_EXPORT(TargetNameKernel);
 
 namespace {
@@ -323,6 +357,10 @@ CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCel
                          float* stored, int stride, int cols, int rows, CellMask candidates) {
   return HWY_DYNAMIC_DISPATCH(DepthTestKernel)(op, test, write, z, stored, stride, cols, rows,
                                                candidates);
+}
+
+void depth_range(const float* first, int stride, int count, int rows, float& lo, float& hi) {
+  HWY_DYNAMIC_DISPATCH(DepthRangeKernel)(first, stride, count, rows, &lo, &hi);
 }
 
 const char* active_simd_target() { return HWY_DYNAMIC_DISPATCH(TargetNameKernel)(); }

@@ -88,6 +88,10 @@ void interpolate_fragments(const InterpolationInput& in, int count, float* depth
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
                          float* stored, int stride, int cols, int rows, CellMask candidates);
 
+// The minimum and maximum of `rows` rows of `count` stored depths, `stride` floats apart (what
+// hierarchical Z keeps per cell). A NaN is never chosen unless it is first[0].
+void depth_range(const float* first, int stride, int count, int rows, float& lo, float& hi);
+
 // Name of the SIMD target the dispatched functions run on now (for reports and tests).
 const char* active_simd_target();
 // The SIMD targets compiled in and supported by this CPU, best first (e.g. AVX2, SSE4, SSSE3,

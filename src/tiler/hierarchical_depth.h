@@ -22,16 +22,7 @@ class HierarchicalDepth {
   // Recomputes cell `cell` from its stored depth: `rows` rows of `count` floats (all samples of
   // the cell's pixels in one row), `stride` floats apart.
   void refresh(int cell, const float* first, int stride, int count, int rows) {
-    float lo = first[0], hi = first[0];
-    for (int r = 0; r < rows; ++r) {
-      const float* row = first + static_cast<size_t>(r) * stride;
-      for (int i = 0; i < count; ++i) {
-        lo = std::min(lo, row[i]);
-        hi = std::max(hi, row[i]);
-      }
-    }
-    min_[cell] = lo;
-    max_[cell] = hi;
+    depth_range(first, stride, count, rows, min_[cell], max_[cell]);
   }
   // True when every incoming depth in [incoming_min, incoming_max] fails `op` against every
   // stored depth of the cell. Only the ordering comparisons can be decided from bounds.

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "raster/cell_raster.h"
 #include "raster/rasterize.h"
@@ -175,6 +177,43 @@ TEST(CellRaster, InterpolationErrorStaysWithinTheDocumentedBound) {
   EXPECT_LE(worst_varying_rel, 0x1p-18);
   RecordProperty("worst_depth_ulps", std::to_string(worst_depth_ulps));
   RecordProperty("worst_varying_rel", std::to_string(worst_varying_rel));
+}
+
+// Hierarchical Z's per-cell bounds: depth_range against the scalar definition, on every SIMD
+// target, for row widths that are and are not multiples of the vector width, with NaN away from
+// the first value (never chosen) and at the first value (always kept).
+TEST(CellRaster, DepthRangeMatchesTheScalarMinMaxOnEveryTarget) {
+  struct RestoreTarget {
+    ~RestoreTarget() { force_simd_target(""); }
+  } restore;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (int trial = 0; trial < 400; ++trial) {
+      const int count = 1 + trial % 64, rows = 1 + (trial / 7) % 8, stride = 70;
+      std::vector<float> plane(static_cast<size_t>(stride) * rows);
+      for (float& v : plane) v = unit(rng);
+      if (trial % 5 == 1) plane[static_cast<size_t>(rng() % rows) * stride + rng() % count] = NAN;
+      if (trial % 17 == 3) plane[0] = NAN;
+      float lo = plane[0], hi = plane[0];
+      for (int r = 0; r < rows; ++r) {
+        for (int i = 0; i < count; ++i) {
+          const float v = plane[static_cast<size_t>(r) * stride + i];
+          lo = v < lo ? v : lo;
+          hi = v > hi ? v : hi;
+        }
+      }
+      float simd_lo = 0.0f, simd_hi = 0.0f;
+      depth_range(plane.data(), stride, count, rows, simd_lo, simd_hi);
+      if (std::isnan(lo)) {
+        EXPECT_TRUE(std::isnan(simd_lo) && std::isnan(simd_hi)) << target;
+      } else {
+        EXPECT_EQ(lo, simd_lo) << target << " count " << count << " rows " << rows;
+        EXPECT_EQ(hi, simd_hi) << target << " count " << count << " rows " << rows;
+      }
+    }
+  }
 }
 
 }  // namespace
