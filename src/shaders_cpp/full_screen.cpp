@@ -41,7 +41,8 @@ void ClearColorShader::shade_batch(const FragmentBatch& batch, BatchOutput& out)
   const int n = batch.padded_fragment_count();
   for (int k = 0; k < outputs_; ++k) {
     for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) out.color[k][c][f] = color_[c];
+      const float value = color_[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) out.color[k][c][f] = value;
     }
   }
 }

@@ -43,14 +43,10 @@ class LambertShader final : public FragmentShader {
   // derivatives), the lighting arithmetic as plain loops over fragment lanes.
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int n = batch.padded_fragment_count();
+    // Textured factors per fragment (factor x texel, the product glTF defines); an untextured
+    // factor stays a constant of the loop below, so nothing is filled per fragment for it.
     alignas(64) float albedo[4][kBatchFragments];
     alignas(64) float emissive[3][kBatchFragments];
-    for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
-    }
-    for (int c = 0; c < 3; ++c) {
-      for (int f = 0; f < n; ++f) emissive[c][f] = p_.emission[c];
-    }
     if constexpr (kBaseMap || kEmissionMap) {
       const float* u = batch.varyings[MeshVertexShader::kUv];
       const float* v = batch.varyings[MeshVertexShader::kUv + 1];
@@ -62,21 +58,29 @@ class LambertShader final : public FragmentShader {
         if constexpr (kBaseMap) {
           p_.base_map->sample_quad(p_.base_sampler, uv, texel);
           for (int lane = 0; lane < kQuadLanes; ++lane) {
-            for (int c = 0; c < 4; ++c) albedo[c][f0 + lane] *= texel[lane][c];
+            for (int c = 0; c < 4; ++c) albedo[c][f0 + lane] = p_.base_color[c] * texel[lane][c];
           }
         }
         // glTF 2.0 3.9.3: emissive = emissiveFactor x emissiveTexture (sRGB).
         if constexpr (kEmissionMap) {
           p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
           for (int lane = 0; lane < kQuadLanes; ++lane) {
-            for (int c = 0; c < 3; ++c) emissive[c][f0 + lane] *= texel[lane][c];
+            for (int c = 0; c < 3; ++c) emissive[c][f0 + lane] = p_.emission[c] * texel[lane][c];
           }
         }
       }
+      // Padding lanes repeat the last fragment, as the batch's own padding does.
+      const int last = batch.fragment_count() - 1;
+      for (int f = last + 1; f < n; ++f) {
+        for (int c = 0; c < 4; ++c) albedo[c][f] = albedo[c][last];
+        for (int c = 0; c < 3; ++c) emissive[c][f] = emissive[c][last];
+      }
     }
+    const auto albedo_at = [&](int c, int f) { return kBaseMap ? albedo[c][f] : p_.base_color[c]; };
+    const auto emissive_at = [&](int c, int f) { return kEmissionMap ? emissive[c][f] : p_.emission[c]; };
     if constexpr (kAlphaTest) {
       for (int f = 0; f < batch.fragment_count(); ++f) {
-        if (batch.active(f) && albedo[3][f] < p_.alpha_cutoff) out.discard(f);
+        if (batch.active(f) && albedo_at(3, f) < p_.alpha_cutoff) out.discard(f);
       }
     }
     const float* nx = batch.varyings[MeshVertexShader::kNormal];
@@ -101,10 +105,10 @@ class LambertShader final : public FragmentShader {
       const float z = (has_length ? qz : 1.0f) * facing;
       const float dot = x * l.x + y * l.y + z * l.z;
       const float n_dot_l = dot > 0.0f ? dot : 0.0f;
-      r[f] = albedo[0][f] * (ambient.x + radiance.x * n_dot_l) + emissive[0][f];
-      g[f] = albedo[1][f] * (ambient.y + radiance.y * n_dot_l) + emissive[1][f];
-      b[f] = albedo[2][f] * (ambient.z + radiance.z * n_dot_l) + emissive[2][f];
-      a[f] = albedo[3][f];
+      r[f] = albedo_at(0, f) * (ambient.x + radiance.x * n_dot_l) + emissive_at(0, f);
+      g[f] = albedo_at(1, f) * (ambient.y + radiance.y * n_dot_l) + emissive_at(1, f);
+      b[f] = albedo_at(2, f) * (ambient.z + radiance.z * n_dot_l) + emissive_at(2, f);
+      a[f] = albedo_at(3, f);
     }
   }
 

@@ -192,26 +192,38 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
   QuadBatcher& batcher = scratch.batcher;
   batcher.begin(ctx, memory, counters, scratch.cells.data(), cells.cells_x, cells.first_x,
                 cells.first_y, scratch.cell_depth.data());
+  const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
+  const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
   for (int qy = y_begin; qy < y_end; qy += 2) {
     const int cj = (qy - cells.first_y) / kCellSizePx;
     const int ly = qy & (kCellSizePx - 1);
-    for (int qx = x_begin; qx < x_end; qx += 2) {
-      const int cell = cj * cells.cells_x + (qx - cells.first_x) / kCellSizePx;
+    for (int ci = ci_begin; ci <= ci_end; ++ci) {
+      const int cell = cj * cells.cells_x + ci;
       const CellState& st = scratch.cells[cell];
-      const int lx = qx & (kCellSizePx - 1);
-      if (!quad_lanes(st.covered_any, lx, ly)) continue;
-      QuadCoverage coverage = 0, passing = 0;
-      for (int s = 0; s < samples; ++s) {
-        coverage |= spread_lanes(quad_lanes(st.covered[s], lx, ly), s);
-        passing |= spread_lanes(quad_lanes(st.passing[s], lx, ly), s);
+      // The quads of this cell row with a covered lane, as bits at their even columns: visited
+      // in ascending x (the tile's row-major quad order) without stepping over empty quads.
+      // Covered bits lie inside the tile and the bounding box (rasterize_cells' valid mask).
+      const uint32_t rows = static_cast<uint32_t>(st.covered_any >> (ly * kCellSizePx)) & 0xFFFFu;
+      const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
+      uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
+      const int cx = cells.first_x + ci * kCellSizePx;
+      while (quads) {
+        const int lx = std::countr_zero(quads);
+        quads &= quads - 1;
+        const int qx = cx + lx;
+        QuadCoverage coverage = 0, passing = 0;
+        for (int s = 0; s < samples; ++s) {
+          coverage |= spread_lanes(quad_lanes(st.covered[s], lx, ly), s);
+          passing |= spread_lanes(quad_lanes(st.passing[s], lx, ly), s);
+        }
+        if (!ctx.late_z) {
+          counters.fragments_depth_rejected +=
+              std::popcount(static_cast<unsigned>(lanes_of(coverage) & ~lanes_of(passing)));
+          // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
+          if (!passing && !ctx.fragments) continue;
+        }
+        batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
       }
-      if (!ctx.late_z) {
-        counters.fragments_depth_rejected +=
-            std::popcount(static_cast<unsigned>(lanes_of(coverage) & ~lanes_of(passing)));
-        // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
-        if (!passing && !ctx.fragments) continue;
-      }
-      batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
     }
   }
   batcher.flush();

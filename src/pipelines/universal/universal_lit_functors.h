@@ -81,10 +81,12 @@ class UniversalLitShader final : public UniversalLitFragment {
     alignas(64) BatchVec3 emissive, normal;
     alignas(64) float visibility[kBatchFragments];
     for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) albedo[c][f] = p_.surface.base_color[c];
+      const float value = p_.surface.base_color[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) albedo[c][f] = value;
     }
     for (int c = 0; c < 3; ++c) {
-      for (int f = 0; f < n; ++f) emissive[c][f] = p_.emission[c];
+      const float value = p_.emission[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) emissive[c][f] = value;
     }
     batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
     uint64_t lit = 0;

@@ -41,15 +41,18 @@ template <bool kBaseMap, bool kAlphaTest, bool kMetallicRoughnessMap, bool kEmis
 void evaluate_pbr_batch(const PbrMaterialParams& p, const FragmentBatch& batch, BatchOutput& out,
                         SurfaceBatch& s) {
   const int n = batch.padded_fragment_count();
+  // glm's operator[] is a switch: each factor is read once so the fills vectorise.
   for (int c = 0; c < 4; ++c) {
-    for (int f = 0; f < n; ++f) s.base_color[c][f] = p.base_color[c];
+    const float value = p.base_color[c];
+    for (int f = 0; f < n; ++f) s.base_color[c][f] = value;
   }
   for (int f = 0; f < n; ++f) {
     s.metallic[f] = p.metallic;
     s.roughness[f] = p.roughness;
   }
   for (int c = 0; c < 3; ++c) {
-    for (int f = 0; f < n; ++f) s.emission[c][f] = p.emission[c];
+    const float value = p.emission[c];
+    for (int f = 0; f < n; ++f) s.emission[c][f] = value;
   }
   if constexpr (kBaseMap || kMetallicRoughnessMap || kEmissionMap) {
     for (int q = 0; q < batch.quad_count; ++q) {

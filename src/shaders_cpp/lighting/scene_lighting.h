@@ -35,9 +35,11 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
   alignas(64) BatchVec3 to_light, radiance;
   for (int f = 0; f < count; ++f) lit_lanes[f] = static_cast<int32_t>((lit >> f) & 1u);
   for (int c = 0; c < 3; ++c) {
+    // glm's operator[] is a switch: read once so the fills vectorise.
+    const float to_light_value = lighting.sun_to_light[c], radiance_value = lighting.sun_radiance[c];
     for (int f = 0; f < count; ++f) {
-      to_light[c][f] = lighting.sun_to_light[c];
-      radiance[c][f] = lighting.sun_radiance[c];
+      to_light[c][f] = to_light_value;
+      radiance[c][f] = radiance_value;
     }
   }
   shade_ggx(brdf, n, to_view, to_light, radiance, lit_lanes, 0, count, false, sum);

@@ -62,9 +62,11 @@ class CelShader final : public FragmentShader {
     const int n = batch.padded_fragment_count();
     alignas(64) BatchVec4 lit, shadow;
     for (int c = 0; c < 4; ++c) {
+      // glm's operator[] is a switch: read each factor once so the fills vectorise.
+      const float lit_value = p_.lit_color[c], shadow_value = p_.shadow_color[c];
       for (int f = 0; f < n; ++f) {
-        lit[c][f] = p_.lit_color[c];
-        shadow[c][f] = p_.shadow_color[c];
+        lit[c][f] = lit_value;
+        shadow[c][f] = shadow_value;
       }
     }
     if constexpr (kTextures) {

@@ -82,7 +82,8 @@ class MatCapShader final : public FragmentShader {
     if constexpr (kNormalMap) batch_unit_normals(batch, ToonVertexShader::kNormal, n, world_normal);
     alignas(64) BatchVec4 matcap, albedo;
     for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
+      const float value = p_.base_color[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) albedo[c][f] = value;
     }
     for (int q = 0; q < batch.quad_count; ++q) {
       const int f0 = q * kQuadLanes;

@@ -55,7 +55,8 @@ class ToonEnvShader final : public FragmentShader {
     alignas(64) BatchVec4 albedo;
     alignas(64) BatchVec3 env = {};
     for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) albedo[c][f] = p_.base_color[c];
+      const float value = p_.base_color[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) albedo[c][f] = value;
     }
     for (int q = 0; q < batch.quad_count; ++q) {
       if (p_.base_map) {  // one branch per quad: the base map is not a keyword of this shader

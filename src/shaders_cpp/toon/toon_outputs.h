@@ -79,7 +79,8 @@ inline void write_toon_normal_and_border(const FragmentBatch& batch, BatchOutput
   if constexpr ((kOutputs & ToonOutput::kBorder) != 0u) {
     auto& border = out.color[toon_output_slot(kOutputs, ToonOutput::kBorder)];
     for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) border[c][f] = params.border_color[c];
+      const float value = params.border_color[c];  // glm's operator[] is a switch: read it once
+      for (int f = 0; f < n; ++f) border[c][f] = value;
     }
   }
 }
