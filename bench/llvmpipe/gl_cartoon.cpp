@@ -72,7 +72,9 @@ GlCartoonFrame::GlCartoonFrame(const Scene& scene, GlScene& gl_scene, const Came
       if (normal && normal->texture && material->has_keyword("_NORMALMAP")) {
         throw Error("llvmpipe runner: material '" + material->name + "' is a normal-mapped MatCap, which the runner lacks");
       }
-      m.matcap = gl_.texture(*p.get_texture("_MatCap")->texture);
+      const TextureBinding* matcap = p.get_texture("_MatCap");
+      if (!matcap || !matcap->texture) throw Error("llvmpipe runner: MatCap material '" + material->name + "' has no MatCap");
+      m.matcap = gl_.texture(*matcap->texture);
       m.matcap_sampler = gl_.sampler(matcap_sampler());
     }
     if (m.key.kind == ToonKind::Environment && material->has_keyword("CAMERA_BASED_ENVIRONMENT")) {

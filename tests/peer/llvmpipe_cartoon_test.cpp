@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <unistd.h>
 
@@ -31,6 +32,9 @@ struct PeerScene {
   const char* generator;
   double size;
 };
+
+// How ctest and gtest name the parameter (instead of its bytes).
+void PrintTo(const PeerScene& s, std::ostream* out) { *out << s.generator << " at size " << s.size; }
 
 fs::path scene_file(const PeerScene& s) {
   const fs::path folder = fs::path(ONTILE_TEST_OUTPUT) / "peer";
