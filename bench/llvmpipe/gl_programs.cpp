@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "util/error.h"
+#include "gl_state.h"
 
 namespace ontile::peer {
 namespace {
@@ -85,22 +85,6 @@ void main() {
 }
 )";
 
-GLuint compile(GLenum stage, const std::string& source) {
-  const GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw Error(std::string("llvmpipe runner: shader compilation failed: ") + log);
-  }
-  return shader;
-}
-
 std::string header(const ProgramKey& key) {
   std::string h = "#version 320 es\nprecision highp float;\nprecision highp int;\n";
   if (key.base_map) h += "#define BASE_MAP\n";
@@ -118,23 +102,9 @@ GlPrograms::~GlPrograms() {
 const GlProgram& GlPrograms::get(const ProgramKey& key) {
   const auto found = programs_.find(key);
   if (found != programs_.end()) return found->second;
-  const GLuint vs = compile(GL_VERTEX_SHADER, header(key) + kVertexSource);
-  const GLuint fs = compile(GL_FRAGMENT_SHADER,
-                            header(key) + (key.primitive_ids ? kPrimitiveIdSource : kLambertSource));
   GlProgram p;
-  p.id = glCreateProgram();
-  glAttachShader(p.id, vs);
-  glAttachShader(p.id, fs);
-  glLinkProgram(p.id);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(p.id, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[4096] = {};
-    glGetProgramInfoLog(p.id, sizeof log, nullptr, log);
-    throw Error(std::string("llvmpipe runner: program link failed: ") + log);
-  }
+  p.id = build_program(header(key) + kVertexSource,
+                       header(key) + (key.primitive_ids ? kPrimitiveIdSource : kLambertSource));
   auto uniform = [&](const char* name) { return glGetUniformLocation(p.id, name); };
   p.mvp = uniform("u_mvp");
   p.normal_matrix = uniform("u_normal_matrix");

@@ -5,72 +5,13 @@
 #include <cmath>
 #include <tuple>
 
+#include "gl_state.h"
 #include "pipelines/lit_shader.h"
 #include "raster/pixel_format.h"
 #include "util/error.h"
 
 namespace ontile::peer {
 namespace {
-
-GLenum gl_wrap(WrapMode mode) {
-  switch (mode) {
-    case WrapMode::Repeat: return GL_REPEAT;
-    case WrapMode::ClampToEdge: return GL_CLAMP_TO_EDGE;
-    case WrapMode::MirroredRepeat: return GL_MIRRORED_REPEAT;
-  }
-  return GL_REPEAT;
-}
-
-GLenum gl_min_filter(const SamplerDesc& s) {
-  const bool linear = s.min_filter == FilterMode::Linear;
-  switch (s.mipmap_mode) {
-    case MipmapMode::None: return linear ? GL_LINEAR : GL_NEAREST;
-    case MipmapMode::Nearest: return linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
-    case MipmapMode::Linear: return linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
-  }
-  return GL_LINEAR_MIPMAP_LINEAR;
-}
-
-GLenum gl_compare(CompareOp op) {
-  switch (op) {
-    case CompareOp::Never: return GL_NEVER;
-    case CompareOp::Less: return GL_LESS;
-    case CompareOp::Equal: return GL_EQUAL;
-    case CompareOp::LessEqual: return GL_LEQUAL;
-    case CompareOp::Greater: return GL_GREATER;
-    case CompareOp::NotEqual: return GL_NOTEQUAL;
-    case CompareOp::GreaterEqual: return GL_GEQUAL;
-    case CompareOp::Always: return GL_ALWAYS;
-  }
-  return GL_LEQUAL;
-}
-
-void apply_blend(const BlendState& blend) {
-  glColorMask(blend.write_mask & 1u, (blend.write_mask >> 1) & 1u, (blend.write_mask >> 2) & 1u,
-              (blend.write_mask >> 3) & 1u);
-  if (blend.mode == BlendMode::Opaque) {
-    glDisable(GL_BLEND);
-    return;
-  }
-  glEnable(GL_BLEND);
-  glBlendEquation(GL_FUNC_ADD);
-  switch (blend.mode) {  // raster/blend.h, every channel alike
-    case BlendMode::Alpha: glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA); break;
-    case BlendMode::Premultiplied: glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); break;
-    case BlendMode::Additive: glBlendFunc(GL_ONE, GL_ONE); break;
-    case BlendMode::Multiply: glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_DST_ALPHA, GL_ZERO); break;
-    case BlendMode::Opaque: break;
-  }
-}
-
-void apply_cull(CullMode cull) {
-  if (cull == CullMode::None) {
-    glDisable(GL_CULL_FACE);
-    return;
-  }
-  glEnable(GL_CULL_FACE);
-  glCullFace(cull == CullMode::Back ? GL_BACK : GL_FRONT);
-}
 
 template <class T>
 GLuint upload_buffer(GLenum target, const std::vector<T>& data) {
@@ -93,16 +34,41 @@ uint8_t srgb_byte(float linear) {
 
 uint8_t unorm_byte(float v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
-}  // namespace
+struct GlTexelFormat {
+  GLenum internal = GL_SRGB8_ALPHA8, type = GL_UNSIGNED_BYTE;
+};
 
-void check_gl(const char* what) {
-  const GLenum e = glGetError();
-  if (e != GL_NO_ERROR) {
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", e);
-    throw Error(std::string("llvmpipe runner: GL error ") + code + " in " + what);
-  }
+GlTexelFormat gl_texel_format(const Texture2D& t) {
+  if (t.encoding() == TexelEncoding::Unorm8) return {GL_RGBA8, GL_UNSIGNED_BYTE};
+  if (t.encoding() == TexelEncoding::Float32) return {GL_RGBA32F, GL_FLOAT};
+  return {};
 }
+
+// One level's texels as stored (8-bit codes or floats), RGBA, rows top first.
+class TexelData {
+ public:
+  TexelData(const Texture2D& t, int level, GlTexelFormat format) {
+    for (int y = 0; y < t.height(level); ++y) {
+      for (int x = 0; x < t.width(level); ++x) {
+        const glm::vec4 v = t.fetch(level, x, y);
+        if (format.type == GL_FLOAT) {
+          floats_.insert(floats_.end(), {v.x, v.y, v.z, v.w});
+        } else if (format.internal == GL_SRGB8_ALPHA8) {
+          bytes_.insert(bytes_.end(), {srgb_byte(v.x), srgb_byte(v.y), srgb_byte(v.z), unorm_byte(v.w)});
+        } else {
+          bytes_.insert(bytes_.end(), {unorm_byte(v.x), unorm_byte(v.y), unorm_byte(v.z), unorm_byte(v.w)});
+        }
+      }
+    }
+  }
+  const void* pointer() const { return floats_.empty() ? static_cast<const void*>(bytes_.data()) : floats_.data(); }
+
+ private:
+  std::vector<uint8_t> bytes_;
+  std::vector<float> floats_;
+};
+
+}  // namespace
 
 GlScene::GlScene(const Scene& scene) : lit_shader_(make_lit_shader()) {
   // ontile's own material mapping, so queue, culling, blending and keywords are the lambert
@@ -163,64 +129,70 @@ GlScene::~GlScene() {
     }
   }
   for (auto& [texture, id] : textures_) glDeleteTextures(1, &id);
+  for (GLuint id : array_textures_) glDeleteTextures(1, &id);
   if (!samplers_.empty()) glDeleteSamplers(static_cast<GLsizei>(samplers_.size()), samplers_.data());
 }
 
-GLuint GlScene::upload_texture(const Texture2D& t) {
+GLuint GlScene::texture(const Texture2D& t) {
   const auto found = textures_.find(&t);
   if (found != textures_.end()) return found->second;
-  GLenum internal = GL_SRGB8_ALPHA8, type = GL_UNSIGNED_BYTE;
-  if (t.encoding() == TexelEncoding::Unorm8) internal = GL_RGBA8;
-  if (t.encoding() == TexelEncoding::Float32) internal = GL_RGBA32F, type = GL_FLOAT;
+  const GlTexelFormat format = gl_texel_format(t);
   GLuint id = 0;
   glGenTextures(1, &id);
   glBindTexture(GL_TEXTURE_2D, id);
-  glTexStorage2D(GL_TEXTURE_2D, t.level_count(), internal, t.width(0), t.height(0));
+  glTexStorage2D(GL_TEXTURE_2D, t.level_count(), format.internal, t.width(0), t.height(0));
   // Every level of ontile's chain as stored, rather than glGenerateMipmap, so both renderers
   // filter the same texels. Rows go top first: GL's t = 0 is then glTF's v = 0, the top row.
   for (int level = 0; level < t.level_count(); ++level) {
-    const int w = t.width(level), h = t.height(level);
-    std::vector<uint8_t> bytes;
-    std::vector<float> floats;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const glm::vec4 v = t.fetch(level, x, y);
-        if (type == GL_FLOAT) {
-          floats.insert(floats.end(), {v.x, v.y, v.z, v.w});
-        } else if (internal == GL_SRGB8_ALPHA8) {
-          bytes.insert(bytes.end(), {srgb_byte(v.x), srgb_byte(v.y), srgb_byte(v.z), unorm_byte(v.w)});
-        } else {
-          bytes.insert(bytes.end(), {unorm_byte(v.x), unorm_byte(v.y), unorm_byte(v.z), unorm_byte(v.w)});
-        }
-      }
-    }
-    const void* data = type == GL_FLOAT ? static_cast<const void*>(floats.data()) : bytes.data();
-    glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, GL_RGBA, type, data);
+    const TexelData data(t, level, format);
+    glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, t.width(level), t.height(level), GL_RGBA, format.type, data.pointer());
   }
   check_gl("texture upload");
   textures_[&t] = id;
   return id;
 }
 
+GLuint GlScene::texture_array(const std::vector<const Texture2D*>& layers) {
+  const Texture2D& first = *layers.at(0);
+  const GlTexelFormat format = gl_texel_format(first);
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, format.internal, first.width(0), first.height(0),
+                 static_cast<GLsizei>(layers.size()));
+  for (size_t layer = 0; layer < layers.size(); ++layer) {
+    const Texture2D& t = *layers[layer];
+    if (t.width(0) != first.width(0) || t.height(0) != first.height(0) || gl_texel_format(t).internal != format.internal) {
+      throw Error("llvmpipe runner: texture array layer '" + t.name() + "' differs from '" + first.name() + "'");
+    }
+    const TexelData data(t, 0, format);
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<GLint>(layer), t.width(0), t.height(0), 1, GL_RGBA,
+                    format.type, data.pointer());
+  }
+  check_gl("texture array upload");
+  array_textures_.push_back(id);
+  return id;
+}
+
+GLuint GlScene::sampler(const SamplerDesc& desc) {
+  samplers_.push_back(make_gl_sampler(desc));
+  return samplers_.back();
+}
+
+const GlScene::GlMesh& GlScene::mesh(const MeshPrimitive* primitive) const { return meshes_.at(primitive); }
+
 GlScene::GlTextureSlot GlScene::texture_slot(const RenderMaterial& material, const char* property) {
   const TextureBinding* binding = material.properties.get_texture(property);
   if (!binding || !binding->texture) return {};
-  const SamplerDesc& s = binding->sampler;
   GlTextureSlot slot;
-  slot.texture = upload_texture(*binding->texture);
-  glGenSamplers(1, &slot.sampler);
-  samplers_.push_back(slot.sampler);
-  glSamplerParameteri(slot.sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(gl_min_filter(s)));
-  glSamplerParameteri(slot.sampler, GL_TEXTURE_MAG_FILTER, s.mag_filter == FilterMode::Linear ? GL_LINEAR : GL_NEAREST);
-  glSamplerParameteri(slot.sampler, GL_TEXTURE_WRAP_S, static_cast<GLint>(gl_wrap(s.wrap_u)));
-  glSamplerParameteri(slot.sampler, GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(s.wrap_v)));
+  slot.texture = texture(*binding->texture);
+  slot.sampler = sampler(binding->sampler);
   return slot;
 }
 
-std::vector<uint32_t> GlScene::sorted_draws(const CameraMatrices& camera, bool transparent) const {
-  const CullingResults culling = cull_renderers(renderers_.renderers, camera, {});
-  const RenderQueueRange range = transparent ? RenderQueueRange::transparent() : RenderQueueRange::opaque();
-  const std::vector<Renderer>& all = renderers_.renderers;
+std::vector<uint32_t> draw_order(const std::vector<Renderer>& all, const CameraMatrices& camera,
+                                 RenderQueueRange range, SortingCriteria sorting) {
+  const CullingResults culling = cull_renderers(all, camera, {});
   std::vector<uint32_t> list;
   for (uint32_t i : culling.visible) {
     const int queue = all[i].material->render_queue;
@@ -239,12 +211,12 @@ std::vector<uint32_t> GlScene::sorted_draws(const CameraMatrices& camera, bool t
   auto bucket = [&](uint32_t i) {
     return max_distance > 0.0 ? static_cast<int>(distance[i] / max_distance * 63.0) : 0;
   };
-  if (!transparent) {
+  if (sorting == SortingCriteria::CommonOpaque) {
     std::stable_sort(list.begin(), list.end(), [&](uint32_t a, uint32_t b) {
       return std::tuple(all[a].material->render_queue, bucket(a), material_order[all[a].material]) <
              std::tuple(all[b].material->render_queue, bucket(b), material_order[all[b].material]);
     });
-  } else {
+  } else if (sorting == SortingCriteria::CommonTransparent) {
     std::stable_sort(list.begin(), list.end(), [&](uint32_t a, uint32_t b) {
       if (all[a].material->render_queue != all[b].material->render_queue) {
         return all[a].material->render_queue < all[b].material->render_queue;
@@ -284,13 +256,7 @@ void GlScene::draw(uint32_t index, const glm::dmat4& view_projection, const Prog
     glBindSampler(kEmissionMapUnit, m.emission_map.sampler);
   }
   apply_cull(m.state.cull);
-  if (m.state.depth_test) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(gl_compare(m.state.depth_compare));
-  } else {
-    glDisable(GL_DEPTH_TEST);
-  }
-  glDepthMask(m.state.depth_write ? GL_TRUE : GL_FALSE);
+  apply_depth(m.state);
   if (!ids) apply_blend(m.state.blend);
   glBindVertexArray(mesh.vao);
   glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
@@ -301,7 +267,9 @@ size_t GlScene::draw_lambert(const glm::dmat4& view_projection, const CameraMatr
   size_t draws = 0;
   const GlProgram* bound = nullptr;
   for (bool transparent : {false, true}) {
-    for (uint32_t i : sorted_draws(camera, transparent)) {
+    const RenderQueueRange range = transparent ? RenderQueueRange::transparent() : RenderQueueRange::opaque();
+    const SortingCriteria sorting = transparent ? SortingCriteria::CommonTransparent : SortingCriteria::CommonOpaque;
+    for (uint32_t i : draw_order(renderers_.renderers, camera, range, sorting)) {
       const ProgramKey& key = materials_.at(renderers_.renderers[i].material).key;
       const GlProgram& program = programs.get(key);
       if (&program != bound) {
@@ -324,7 +292,7 @@ size_t GlScene::draw_primitive_ids(const glm::dmat4& view_projection, const Came
   size_t draws = 0;
   glDisable(GL_BLEND);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  for (uint32_t i : sorted_draws(camera, false)) {
+  for (uint32_t i : draw_order(renderers_.renderers, camera, RenderQueueRange::opaque(), SortingCriteria::CommonOpaque)) {
     const GlMaterial& m = materials_.at(renderers_.renderers[i].material);
     // Only an alpha-tested material needs its base map: the AOV runs the material's functor
     // just for its discards.

@@ -1,6 +1,7 @@
-// ontile_peer_bench: ontile's lambert frame against Mesa llvmpipe (bench/llvmpipe/) on the same
-// scenes, camera, size and shading; frame-time table per scene and thread count, and how many
-// pixels show the same triangle (primitive-id AOVs) and the same colour in both renderers.
+// ontile_peer_bench: ontile's lambert and cartoon frames against Mesa llvmpipe (bench/llvmpipe/)
+// on the same scenes, camera, size and shading; a frame-time table per pipeline, scene and
+// thread count, and how many pixels agree: the same triangle (lambert's primitive-id AOVs) or
+// the same edge decision (cartoon's Sobel pass), and the same colour.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -13,8 +14,10 @@
 #include <CLI/CLI.hpp>
 
 #include "io/image_io.h"
+#include "cartoon_reference.h"
 #include "peer_child.h"
 #include "peer_compare.h"
+#include "peer_report.h"
 #include "pipelines/aov/aov_pass.h"
 #include "pipelines/render_frame.h"
 #include "scene/gen/scene_generator.h"
@@ -30,7 +33,8 @@ namespace fs = std::filesystem;
 
 struct Options {
   int frames = 5;
-  std::string scenes = "atrium,atrium-2m,ToyCar,DamagedHelmet", size = "1920x1080", threads = "1,2";
+  std::string scenes = "atrium,atrium-2m,ToyCar,DamagedHelmet,demo", size = "1920x1080", threads = "1,2";
+  std::string pipelines = "lambert,cartoon";
   std::string markdown, llvmpipe = ONTILE_LLVMPIPE_RUNNER, keep;
 };
 
@@ -38,23 +42,17 @@ struct Options {
 // ../shared/assets.
 struct PeerScene {
   std::string name;
-  double generated_size = 0.0;  // > 0: bench::generated_scene("atrium", size)
+  std::string generator;  // non-empty: generate_scene(generator, size)
+  double size = 1.0;
   std::string shared_relative;
 };
 
-const std::vector<PeerScene> kScenes = {{"atrium", 1.0, ""},
-                                        {"atrium-2m", 8.0, ""},
-                                        {"ToyCar", 0.0, "ToyCar/ToyCar.gltf"},
-                                        {"DamagedHelmet", 0.0, "DamagedHelmet/DamagedHelmet.glb"}};
-
-struct Row {
-  std::string scene;
-  uint64_t triangles = 0;
-  int threads = 0;
-  FrameTimes ontile, llvmpipe;
-  IdAgreement ids;
-  ColorAgreement color;
-};
+// demo: the cartoon design's own scene (cel, MatCap and ToonEnv materials, borders).
+const std::vector<PeerScene> kScenes = {{"atrium", "atrium", 1.0, ""},
+                                        {"atrium-2m", "atrium", 8.0, ""},
+                                        {"ToyCar", "", 1.0, "ToyCar/ToyCar.gltf"},
+                                        {"DamagedHelmet", "", 1.0, "DamagedHelmet/DamagedHelmet.glb"},
+                                        {"demo", "demo", 1.0, ""}};
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -89,8 +87,18 @@ std::vector<PeerScene> select_scenes(const std::string& filter) {
     for (const PeerScene& s : kScenes) {
       if (lower(s.name) == lower(name)) out.push_back(s), found = true;
     }
-    if (!found) throw Error("--scenes '" + name + "': unknown scene (atrium, atrium-2m, ToyCar, DamagedHelmet)");
+    if (!found) throw Error("--scenes '" + name + "': unknown scene (atrium, atrium-2m, ToyCar, DamagedHelmet, demo)");
   }
+  return out;
+}
+
+std::vector<std::string> select_pipelines(const std::string& text) {
+  std::vector<std::string> out;
+  for (const std::string& name : split(text)) {
+    if (name != "lambert" && name != "cartoon") throw Error("--pipelines '" + name + "': expected lambert or cartoon");
+    out.push_back(name);
+  }
+  if (out.empty()) throw Error("--pipelines '" + text + "': no pipeline");
   return out;
 }
 
@@ -117,35 +125,6 @@ std::string first_line_of_command(const std::string& command) {
   return out.empty() ? "unknown" : out;
 }
 
-// Two ratios: of the median wall times, and of the CPU times per frame (all threads), which
-// other work on the machine disturbs much less.
-std::string table(const std::vector<Row>& rows, bool markdown) {
-  std::string out;
-  char line[512];
-  if (markdown) {
-    out += "| scene | triangles | threads | ontile median ms | ontile min ms | ontile CPU ms | "
-           "llvmpipe median ms | llvmpipe min ms | llvmpipe CPU ms | ontile / llvmpipe (median) | "
-           "ontile / llvmpipe (CPU) | primitive ids equal | colour within 2/255 |\n"
-           "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-  } else {
-    std::snprintf(line, sizeof line, "%-14s %9s %7s | %10s %8s %8s | %10s %8s %8s | %6s %6s | %10s %9s\n", "scene",
-                  "triangles", "threads", "ontile med", "min", "CPU", "llvmpipe", "min", "CPU", "ratio", "CPU",
-                  "ids equal", "colour ok");
-    out += line;
-  }
-  for (const Row& r : rows) {
-    const char* fmt = markdown
-        ? "| %s | %llu | %d | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f | %.2f | %.3f %% | %.2f %% |\n"
-        : "%-14s %9llu %7d | %10.1f %8.1f %8.1f | %10.1f %8.1f %8.1f | %6.2f %6.2f | %9.3f%% %8.2f%%\n";
-    std::snprintf(line, sizeof line, fmt, r.scene.c_str(), static_cast<unsigned long long>(r.triangles), r.threads,
-                  r.ontile.median_ms, r.ontile.min_ms, r.ontile.cpu_ms_per_frame, r.llvmpipe.median_ms,
-                  r.llvmpipe.min_ms, r.llvmpipe.cpu_ms_per_frame, r.ontile.median_ms / r.llvmpipe.median_ms,
-                  r.ontile.cpu_ms_per_frame / r.llvmpipe.cpu_ms_per_frame, r.ids.percent(), r.color.percent());
-    out += line;
-  }
-  return out;
-}
-
 void run(const Options& o) {
   RenderSettings settings;
   char x = 0, extra = 0;
@@ -155,6 +134,7 @@ void run(const Options& o) {
   }
   const std::vector<int> threads = parse_threads(o.threads);
   const std::vector<PeerScene> scenes = select_scenes(o.scenes);
+  const std::vector<std::string> pipelines = select_pipelines(o.pipelines);
   if (access(o.llvmpipe.c_str(), X_OK) != 0) throw Error(o.llvmpipe + ": the llvmpipe runner is not an executable");
   // Outputs of both renderers: kept in --keep, else in a temporary folder removed at the end.
   const fs::path work = o.keep.empty() ? fs::temp_directory_path() / ("ontile_peer_" + std::to_string(getpid()))
@@ -171,15 +151,15 @@ void run(const Options& o) {
   // Other work on the machine slows both renderers; the Markdown records the load around the run.
   const std::string load_before = first_line_of_command("cut -d' ' -f1-3 /proc/loadavg");
 
-  std::vector<Row> rows;
+  std::vector<PeerRow> rows;
   std::string renderer;
   for (const PeerScene& ps : scenes) {
     fs::path file;
-    if (ps.generated_size > 0.0) {
+    if (!ps.generator.empty()) {
       file = work / ("generated_" + ps.name + ".glb");
       SceneGenOptions gen;
-      gen.size = ps.generated_size;
-      generate_scene("atrium", gen, file);
+      gen.size = ps.size;
+      generate_scene(ps.generator, gen, file);
     } else {
       file = fs::path(ONTILE_SHARED_ASSETS) / ps.shared_relative;
       if (!fs::exists(file)) {
@@ -188,60 +168,82 @@ void run(const Options& o) {
       }
     }
     const Scene scene = load_gltf(file);
-    for (int t : threads) {
-      Row row;
-      row.scene = ps.name;
-      row.triangles = scene.drawn_triangle_count();
-      row.threads = t;
-      settings.context.threads = t;
-      RenderedFrame last;
-      row.ontile = time_ontile(scene, settings, o.frames, last);
-      const AovFrame ids = render_aov_frame(scene, settings, {AovKind::PrimitiveId});
-      const std::string stem = ps.name + "_t" + std::to_string(t);
-      LlvmpipeRequest request{o.llvmpipe, file, settings.width_px, settings.height_px, o.frames, t,
-                              work / (stem + "_llvmpipe.png"), work / (stem + "_llvmpipe_ids.exr")};
-      const LlvmpipeRun child = run_llvmpipe(request);
-      renderer = child.renderer;
-      row.llvmpipe = child.times;
-      row.ids = compare_primitive_ids(*ids.surfaces[0], request.primitive_ids_exr);
-      row.color = compare_colors(*last.outputs.color, request.color_png);
-      if (!o.keep.empty()) {
-        write_png_rgba8(work / (stem + "_ontile.png"), settings.width_px, settings.height_px,
-                        last.outputs.color->bytes());
-        write_exr_channels(work / (stem + "_ontile_ids.exr"), settings.width_px, settings.height_px,
-                           aov_channel_names(AovKind::PrimitiveId),
-                           aov_channels(*ids.surfaces[0], AovKind::PrimitiveId));
+    for (const std::string& pipeline : pipelines) {
+      const bool cartoon = pipeline == "cartoon";
+      settings.pipeline = pipeline;
+      // ontile's edge decisions do not depend on the thread count: computed once per scene.
+      CartoonReference reference;
+      for (int t : threads) {
+        PeerRow row;
+        row.pipeline = pipeline;
+        row.scene = ps.name;
+        row.triangles = scene.drawn_triangle_count();
+        row.threads = t;
+        settings.context.threads = t;
+        RenderedFrame last;
+        row.ontile = time_ontile(scene, settings, o.frames, last);
+        const std::string stem = pipeline + "_" + ps.name + "_t" + std::to_string(t);
+        LlvmpipeRequest request{o.llvmpipe, file, settings.width_px, settings.height_px, o.frames, t, pipeline,
+                                work / (stem + "_llvmpipe.png"), {}, {}};
+        if (cartoon) {
+          request.edges_png = work / (stem + "_llvmpipe_edges.png");
+        } else {
+          request.primitive_ids_exr = work / (stem + "_llvmpipe_ids.exr");
+        }
+        const LlvmpipeRun child = run_llvmpipe(request);
+        renderer = child.renderer;
+        row.llvmpipe = child.times;
+        row.color = compare_colors(*last.outputs.color, request.color_png);
+        if (cartoon) {
+          if (reference.edge_mask.empty()) reference = render_cartoon_reference(scene, settings);
+          row.edges = compare_edge_masks(reference.edge_mask, settings.width_px, settings.height_px, request.edges_png);
+        } else {
+          const AovFrame ids = render_aov_frame(scene, settings, {AovKind::PrimitiveId});
+          row.ids = compare_primitive_ids(*ids.surfaces[0], request.primitive_ids_exr);
+          if (!o.keep.empty()) {
+            write_exr_channels(work / (stem + "_ontile_ids.exr"), settings.width_px, settings.height_px,
+                               aov_channel_names(AovKind::PrimitiveId),
+                               aov_channels(*ids.surfaces[0], AovKind::PrimitiveId));
+          }
+        }
+        if (!o.keep.empty()) {
+          write_png_rgba8(work / (stem + "_ontile.png"), settings.width_px, settings.height_px,
+                          last.outputs.color->bytes());
+          if (cartoon) {
+            std::vector<uint8_t> rgba(reference.edge_mask.size() * 4, 255);
+            for (size_t i = 0; i < reference.edge_mask.size(); ++i) {
+              rgba[i * 4] = rgba[i * 4 + 1] = rgba[i * 4 + 2] = reference.edge_mask[i] ? 255 : 0;
+            }
+            write_png_rgba8(work / (stem + "_ontile_edges.png"), settings.width_px, settings.height_px, rgba);
+          }
+        }
+        std::printf("%s", peer_row_line(row).c_str());
+        std::fflush(stdout);
+        rows.push_back(row);
       }
-      std::printf("%s, %d thread(s): ontile %.1f ms, llvmpipe %.1f ms (medians; %.2f and %.2f cores busy); "
-                  "primitive ids equal on "
-                  "%.3f%% (%llu pixels differ in coverage, %llu in id, of which %llu are boundaries shifted by "
-                  "a pixel); colour within %d/255 on %.2f%% (mean |diff| %.3f)\n",
-                  ps.name.c_str(), t, row.ontile.median_ms, row.llvmpipe.median_ms, row.ontile.cores_busy,
-                  row.llvmpipe.cores_busy, row.ids.percent(),
-                  static_cast<unsigned long long>(row.ids.coverage_differs),
-                  static_cast<unsigned long long>(row.ids.id_differs),
-                  static_cast<unsigned long long>(row.ids.boundary_shifts), kColorTolerance, row.color.percent(),
-                  row.color.mean_abs_diff);
-      std::fflush(stdout);
-      rows.push_back(row);
     }
-    if (ps.generated_size > 0.0 && o.keep.empty()) fs::remove(file);
+    if (!ps.generator.empty() && o.keep.empty()) fs::remove(file);
   }
 
-  std::printf("\nlambert at %dx%d, median of %d frames after 1 warm-up; CPU = process CPU ms per frame; ratios = "
-              "ontile / llvmpipe\n%s",
-              settings.width_px, settings.height_px, o.frames, table(rows, false).c_str());
+  std::string text;
+  for (const std::string& pipeline : pipelines) {
+    text += "\n" + pipeline + " at " + std::to_string(settings.width_px) + "x" + std::to_string(settings.height_px) +
+            ", median of " + std::to_string(o.frames) +
+            " frames after 1 warm-up; CPU = process CPU ms per frame; ratios = ontile / llvmpipe\n" +
+            peer_table(rows, pipeline, false);
+  }
+  std::printf("%s", text.c_str());
   if (!o.markdown.empty()) {
     const std::string commit =
         first_line_of_command("git -C '" + std::string(ONTILE_SOURCE_DIR) + "' describe --always --dirty 2>/dev/null");
     const std::string cpu = first_line_of_command("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
     std::ostringstream md;
-    md << "lambert at " << settings.width_px << "x" << settings.height_px << ", median of " << o.frames
-       << " frames after 1 warm-up; ontile commit " << commit << "; " << renderer << "; CPU " << cpu << " ("
+    md << "Median of " << o.frames << " frames after 1 warm-up at " << settings.width_px << "x" << settings.height_px
+       << "; ontile commit " << commit << "; " << renderer << "; CPU " << cpu << " ("
        << sysconf(_SC_NPROCESSORS_ONLN) << " logical cores); load average (1, 5, 15 min) " << load_before
        << " before the run, " << first_line_of_command("cut -d' ' -f1-3 /proc/loadavg")
-       << " after. CPU ms: process CPU time per frame, all threads.\n\n"
-       << table(rows, true);
+       << " after. CPU ms: process CPU time per frame, all threads.\n";
+    for (const std::string& pipeline : pipelines) md << "\n### " << pipeline << "\n\n" << peer_table(rows, pipeline, true);
     const fs::path path(o.markdown);
     if (path.has_parent_path()) fs::create_directories(path.parent_path());
     write_file_atomically(path, [&](const fs::path& tmp) {
@@ -257,15 +259,17 @@ void run(const Options& o) {
 }  // namespace ontile::peer
 
 int main(int argc, char** argv) {
-  CLI::App app{"ontile_peer_bench: ontile's lambert frame against Mesa llvmpipe (frame times, primitive ids)"};
+  CLI::App app{"ontile_peer_bench: ontile's lambert and cartoon frames against Mesa llvmpipe (frame times, "
+               "agreement)"};
   ontile::peer::Options o;
   app.add_option("--frames", o.frames, "Timed frames per run after one warm-up (default 5)")->check(CLI::Range(1, 100000));
-  app.add_option("--scenes", o.scenes, "Comma-separated: atrium, atrium-2m, ToyCar, DamagedHelmet (default all)");
+  app.add_option("--scenes", o.scenes, "Comma-separated: atrium, atrium-2m, ToyCar, DamagedHelmet, demo (default all)");
   app.add_option("--size", o.size, "Image size WIDTHxHEIGHT (default 1920x1080)");
   app.add_option("--threads", o.threads, "Comma-separated thread counts (default 1,2)");
+  app.add_option("--pipelines", o.pipelines, "Comma-separated: lambert, cartoon (default both)");
   app.add_option("--markdown", o.markdown, "Also write the table as Markdown to this file");
   app.add_option("--llvmpipe", o.llvmpipe, "The llvmpipe runner (default: the one built with this program)");
-  app.add_option("--keep", o.keep, "Keep both renderers' images and primitive-id EXRs in this folder");
+  app.add_option("--keep", o.keep, "Keep both renderers' images, primitive-id EXRs and edge masks in this folder");
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

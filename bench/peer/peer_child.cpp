@@ -43,9 +43,10 @@ std::vector<char*> c_strings(std::vector<std::string>& strings) {
 LlvmpipeRun run_llvmpipe(const LlvmpipeRequest& r) {
   std::vector<std::string> args = {r.runner.string(), "--scene", r.scene.string(), "--size",
                                    std::to_string(r.width_px) + "x" + std::to_string(r.height_px),
-                                   "--frames", std::to_string(r.frames)};
+                                   "--frames", std::to_string(r.frames), "--pipeline", r.pipeline};
   if (!r.color_png.empty()) args.insert(args.end(), {"--color", r.color_png.string()});
   if (!r.primitive_ids_exr.empty()) args.insert(args.end(), {"--primitive-ids", r.primitive_ids_exr.string()});
+  if (!r.edges_png.empty()) args.insert(args.end(), {"--edges", r.edges_png.string()});
   std::vector<std::string> env = child_environment(
       {"LP_NUM_THREADS=" + std::to_string(r.threads), "EGL_PLATFORM=surfaceless", "LIBGL_ALWAYS_SOFTWARE=1",
        "GALLIUM_DRIVER=llvmpipe"});
@@ -85,8 +86,11 @@ LlvmpipeRun run_llvmpipe(const LlvmpipeRequest& r) {
     if (line.rfind("cpu_ms_per_frame: ", 0) == 0) run.times.cpu_ms_per_frame = std::atof(line.c_str() + 18);
     if (line.rfind("renderer: ", 0) == 0) run.renderer = line.substr(10);
   }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kLlvmpipeUnavailableExit) {
+    throw LlvmpipeUnavailable(r.runner.string() + ": " + (last.empty() ? "EGL or llvmpipe unavailable" : last));
+  }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !median || !min) {
-    throw Error(r.runner.string() + " (LP_NUM_THREADS=" + std::to_string(r.threads) + ", " +
+    throw Error(r.runner.string() + " (" + r.pipeline + ", LP_NUM_THREADS=" + std::to_string(r.threads) + ", " +
                 r.scene.string() + ") failed: " + (last.empty() ? "no output" : last));
   }
   return run;

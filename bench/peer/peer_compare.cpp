@@ -58,6 +58,46 @@ IdAgreement compare_primitive_ids(const Surface& ontile_ids, const std::filesyst
   return a;
 }
 
+EdgeAgreement compare_edge_masks(const std::vector<uint8_t>& ontile_mask, int width, int height,
+                                 const std::filesystem::path& llvmpipe_png) {
+  int w = 0, h = 0;
+  const std::vector<uint8_t> png = read_png_rgba8(llvmpipe_png, w, h);
+  if (w != width || h != height || ontile_mask.size() != static_cast<size_t>(w) * h) {
+    throw Error(llvmpipe_png.string() + ": " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
+                std::to_string(width) + "x" + std::to_string(height));
+  }
+  std::vector<uint8_t> mine(ontile_mask.size()), theirs(ontile_mask.size());
+  for (size_t i = 0; i < mine.size(); ++i) {
+    mine[i] = ontile_mask[i] != 0;
+    theirs[i] = png[i * 4] >= 128;
+  }
+  auto edge_nearby = [&](const std::vector<uint8_t>& mask, int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if (nx >= 0 && ny >= 0 && nx < w && ny < h && mask[static_cast<size_t>(ny) * w + nx]) return true;
+      }
+    }
+    return false;
+  };
+  EdgeAgreement a;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = static_cast<size_t>(y) * w + x;
+      ++a.pixels;
+      a.ontile_edges += mine[i];
+      a.llvmpipe_edges += theirs[i];
+      if (mine[i] == theirs[i]) {
+        ++a.equal;
+        continue;
+      }
+      ++(mine[i] ? a.only_ontile : a.only_llvmpipe);
+      if (edge_nearby(mine[i] ? theirs : mine, x, y)) ++a.shifted;
+    }
+  }
+  return a;
+}
+
 ColorAgreement compare_colors(const Surface& ontile_color, const std::filesystem::path& llvmpipe_png) {
   if (ontile_color.format() != PixelFormat::RGBA8_SRGB || ontile_color.samples() != 1) {
     throw Error("colour comparison: ontile's target is " + std::string(format_name(ontile_color.format())) +
