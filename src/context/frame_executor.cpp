@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <thread>
 
 #include "shaders_cpp/full_screen.h"
@@ -63,13 +64,14 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
   }
   auto& snapshot = snapshots_[s];
   if (!snapshot) {
-    std::vector<float> rgba;
-    rgba.reserve(static_cast<size_t>(s->width()) * s->height() * 4);
+    // Decoded a row at a time (decode_pixels: the values Surface::read gives, on SIMD lanes).
+    const size_t row_floats = static_cast<size_t>(s->width()) * 4;
+    std::vector<float> rgba(row_floats * s->height());
+    std::vector<glm::vec4> row(static_cast<size_t>(s->width()));
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
     for (int y = 0; y < s->height(); ++y) {
-      for (int x = 0; x < s->width(); ++x) {
-        const glm::vec4 v = s->read(x, y);
-        rgba.insert(rgba.end(), {v.x, v.y, v.z, v.w});
-      }
+      decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(), row.data());
+      std::memcpy(rgba.data() + row_floats * y, row.data(), row_floats * sizeof(float));
     }
     snapshot = Texture2D::from_surface_texels(s->width(), s->height(), std::move(rgba),
                                               bytes_per_pixel(s->format()), s->name());

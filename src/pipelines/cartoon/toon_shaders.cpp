@@ -1,6 +1,9 @@
 // Toon shaders and materials (see toon_shaders.h).
 #include "pipelines/cartoon/toon_shaders.h"
 
+#include <map>
+#include <mutex>
+
 #include "pipelines/cartoon/toon_settings.h"
 #include "pipelines/lit_shader.h"
 #include "shaders_cpp/full_screen.h"
@@ -17,6 +20,25 @@ namespace ontile {
 namespace {
 
 constexpr int kSkyFacePx = 128;
+
+// The generated sky and MatCaps are pure functions of their parameters and immutable, but
+// generating them costs more than a frame (the demo's three 512x512 MatCaps took ~380 ms of
+// every cartoon frame), so all frames of a process share one copy of each. Texture ids and
+// addresses do not reach the reports: the texture-cache model places textures per frame in
+// first-use order.
+std::shared_ptr<const CubeMap> shared_gradient_sky() {
+  static const std::shared_ptr<const CubeMap> sky = generate_gradient_sky(kSkyFacePx);
+  return sky;
+}
+
+std::shared_ptr<const Texture2D> shared_generated_matcap(MatCapStyle style) {
+  static std::mutex mutex;
+  static std::map<MatCapStyle, std::shared_ptr<const Texture2D>> generated;
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = generated[style];
+  if (!slot) slot = generate_matcap(style);
+  return slot;
+}
 
 ToonOutputParams output_params(const DrawContext& ctx, NormalEncoding encoding) {
   return {encoding, ctx.properties.get_vector("_BorderColor")};
@@ -127,7 +149,7 @@ std::unique_ptr<Shader> toon_shader(const char* name, Make make) {
 }  // namespace
 
 ToonShaderLibrary::ToonShaderLibrary(NormalEncoding encoding)
-    : encoding_(encoding), sky_(generate_gradient_sky(kSkyFacePx)) {
+    : encoding_(encoding), sky_(shared_gradient_sky()) {
   const NormalEncoding e = encoding;
   const CubeMap* sky = sky_.get();
   cel_ = toon_shader("ToonCel", [e]<uint32_t k>() -> PassFactory {
@@ -177,7 +199,7 @@ ToonShaderLibrary::~ToonShaderLibrary() = default;
 std::shared_ptr<const Texture2D> ToonShaderLibrary::matcap(const std::string& name) const {
   auto& slot = matcaps_[name];
   if (!slot) {
-    slot = (name == "clay" || name == "metal" || name == "painted") ? generate_matcap(parse_matcap_style(name))
+    slot = (name == "clay" || name == "metal" || name == "painted") ? shared_generated_matcap(parse_matcap_style(name))
                                                                     : load_matcap(name);
   }
   return slot;
