@@ -11,6 +11,7 @@
 #include "raster/sample_pattern.h"
 #include "tiler/parameter_buffer.h"
 #include "tiler/tile_executor.h"
+#include "tiler/trace_buffers.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -204,12 +205,13 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   tbb::combinable<TileCounters> counters;
   const int attachment_count = static_cast<int>(pass.attachments.size());
   const bool imr = config.architecture == Architecture::Imr;
+  const TraceBuffersLease texel_buffers;
   std::vector<TileTrace> traces(grid.tile_count());
   tbb::parallel_for(0, grid.tile_count(), [&](int tile) {
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
-    execute_tile(pass, params, tile, memory, counters.local(), traces[tile], imr,
-                 config.hierarchical_z);
+    execute_tile(pass, params, tile, memory, counters.local(), traces[tile],
+                 texel_buffers.local(), imr, config.hierarchical_z);
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);

@@ -1,5 +1,5 @@
-// The texture cache model (see texture_cache.h): config validation, set-associative LRU lookup,
-// and the replay of the tiles' texture granules in tile-index order.
+// The texture cache model (see texture_cache.h): config validation and the placement of texture
+// regions in the frame's address space.
 #include "tiler/texture_cache.h"
 
 #include "raster/texture.h"
@@ -45,31 +45,17 @@ void TextureTraffic::add(const TextureTraffic& o) {
 
 TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
   validate(config_);
-  sets_ = static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
-  tags_.assign(static_cast<size_t>(sets_) * config_.ways, kEmptyWay);
-}
-
-// Mapping (plain modulo, no hashing, so tests can place lines in sets by hand):
-//   line = granule / (line_bytes / 64), set = line % sets, tag = line.
-// Keeping the whole line number as the tag makes a hit unambiguous whatever the set count.
-// Replacement is LRU: each set keeps its lines ordered from most to least recently used, so a
-// hit moves its line to the front and a miss drops the last (least recent or empty) way. Hits
-// are found after a few compares, since texture streams reuse the lines they just touched.
-bool TextureCache::access(uint64_t granule) {
-  const uint64_t line = granule >> std::countr_zero(config_.line_bytes / kGranuleBytes);
-  uint64_t* set = tags_.data() + static_cast<size_t>(line % sets_) * config_.ways;
-  const uint32_t ways = config_.ways;
-  uint32_t position = 0;
-  while (position < ways && set[position] != line) ++position;
-  const bool hit = position < ways;
-  if (!hit) position = ways - 1;  // evict the least recently used (or an empty) way
-  for (uint32_t i = position; i > 0; --i) set[i] = set[i - 1];
-  set[0] = line;
-  return hit;
+  const auto sets =
+      static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
+  tags_.assign(static_cast<size_t>(sets) * config_.ways, kEmptyWay);
+  lookup_.tags_ = tags_.data();
+  lookup_.ways_ = config_.ways;
+  lookup_.sets_ = sets;
+  lookup_.line_shift_ = std::countr_zero(config_.line_bytes / kGranuleBytes);
+  lookup_.sets_are_power_of_two_ = std::has_single_bit(sets);
 }
 
 uint64_t TextureCache::frame_base_granule(uint64_t id) {
-  if (id == last_id_) return last_base_granule_;
   auto it = frame_base_granule_.find(id);
   if (it == frame_base_granule_.end()) {
     // Frame-local placement starts above the id-0 range so the two never overlap.
@@ -77,20 +63,21 @@ uint64_t TextureCache::frame_base_granule(uint64_t id) {
     it = frame_base_granule_.emplace(id, next_frame_granule_).first;
     next_frame_granule_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
   }
-  last_id_ = id;
-  last_base_granule_ = it->second;
   return it->second;
 }
 
-uint64_t TextureCache::frame_granule(uint64_t traced_granule) {
-  const uint64_t id = traced_granule >> kRegionShiftGranules;
-  if (id == 0) return traced_granule;
-  return frame_base_granule(id) + (traced_granule & ((uint64_t{1} << kRegionShiftGranules) - 1));
+uint64_t TextureCache::place(uint64_t id) {
+  if (id == 0) return 0;
+  return frame_base_granule(id) - (id << kRegionShiftGranules);
 }
 
-uint32_t TextureCache::set_of(uint64_t frame_granule) const {
-  const uint64_t line = frame_granule >> std::countr_zero(config_.line_bytes / kGranuleBytes);
-  return static_cast<uint32_t>(line % sets_);
+uint64_t TextureCache::placed_offset(uint64_t id) const {
+  if (id == 0) return 0;
+  const auto it = frame_base_granule_.find(id);
+  if (it == frame_base_granule_.end()) {
+    throw Error("texture region " + std::to_string(id) + " was never placed in this frame");
+  }
+  return it->second - (id << kRegionShiftGranules);
 }
 
 }  // namespace ontile

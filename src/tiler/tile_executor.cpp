@@ -233,8 +233,10 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  bool record_fragment_accesses, bool hierarchical_z) {
-  const TexelTraceScope texel_trace(&trace.texture_granules);
+                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  bool hierarchical_z) {
+  trace.texture_granules = GranuleRange{&texel_buffer, texel_buffer.size(), texel_buffer.size()};
+  const TexelTraceScope texel_trace(&texel_buffer);
   const TileGrid& grid = params.grid;
   TileRect rect;
   rect.x0 = (tile_index % grid.tiles_x()) * grid.tile_width_px;
@@ -280,6 +282,7 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     }
   }
   store_tile(pass, rect, memory);
+  trace.texture_granules.end = texel_buffer.size();
 }
 
 }  // namespace ontile

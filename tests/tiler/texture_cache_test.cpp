@@ -25,6 +25,15 @@ TextureCacheConfig cache_config(uint32_t size_bytes, uint32_t line_bytes, uint32
   return c;
 }
 
+// One TileTrace per granule list, each naming all of its list (which must outlive them).
+std::vector<TileTrace> traces_of(const std::vector<std::vector<uint64_t>>& tiles) {
+  std::vector<TileTrace> traces(tiles.size());
+  for (size_t t = 0; t < tiles.size(); ++t) {
+    traces[t].texture_granules = {&tiles[t], 0, tiles[t].size()};
+  }
+  return traces;
+}
+
 // Hit (true) or miss (false) of each access, in order.
 std::vector<bool> access_all(TextureCache& cache, const std::vector<uint64_t>& granules) {
   std::vector<bool> hits;
@@ -34,9 +43,9 @@ std::vector<bool> access_all(TextureCache& cache, const std::vector<uint64_t>& g
 
 TEST(TextureCache, ColdMissesThenAllHitsWhenTheWorkingSetFits) {
   TextureCache cache(TextureCacheConfig{});  // 256 KiB, 64-byte lines, 16 ways: 4096 lines
-  TileTrace trace;
-  for (uint64_t g = 0; g < 4096; ++g) trace.texture_granules.push_back(1000 + g);
-  const std::vector<TileTrace> traces{trace};
+  std::vector<std::vector<uint64_t>> granules(1);
+  for (uint64_t g = 0; g < 4096; ++g) granules[0].push_back(1000 + g);
+  const std::vector<TileTrace> traces = traces_of(granules);
   const TextureTraffic first = replay_texture_traces(cache, traces);
   EXPECT_EQ(first.accesses, 4096u);
   EXPECT_EQ(first.hits, 0u);
@@ -80,10 +89,11 @@ TEST(TextureCache, LruEvictsTheLeastRecentlyUsedWayInExactOrder) {
 TEST(TextureCache, WideLinesHoldSeveralGranulesAndReplayCountsLineBytes) {
   // 128-byte lines: granules 2k and 2k+1 share line k. 1 set x 4 ways.
   TextureCache cache(cache_config(512, 128, 4));
-  TileTrace tile0, tile1;
-  tile0.texture_granules = {0, 1, 2, 3};  // lines 0, 0, 1, 1
-  tile1.texture_granules = {5, 4, 0};     // lines 2, 2, 0
-  const TextureTraffic t = replay_texture_traces(cache, {tile0, tile1});
+  const std::vector<std::vector<uint64_t>> granules = {
+      {0, 1, 2, 3},  // lines 0, 0, 1, 1
+      {5, 4, 0},     // lines 2, 2, 0
+  };
+  const TextureTraffic t = replay_texture_traces(cache, traces_of(granules));
   EXPECT_EQ(t.accesses, 7u);
   EXPECT_EQ(t.misses, 3u);
   EXPECT_EQ(t.hits, 4u);
@@ -93,10 +103,8 @@ TEST(TextureCache, WideLinesHoldSeveralGranulesAndReplayCountsLineBytes) {
 TEST(TextureCache, ReplayVisitsTilesInIndexOrder) {
   // 1 set x 1 way: tile 0 leaves line 7 resident, so tile 1's first access hits.
   TextureCache cache(cache_config(64, 64, 1));
-  TileTrace tile0, tile1;
-  tile0.texture_granules = {3, 7};
-  tile1.texture_granules = {7, 3};
-  const TextureTraffic t = replay_texture_traces(cache, {tile0, tile1});
+  const std::vector<std::vector<uint64_t>> granules = {{3, 7}, {7, 3}};
+  const TextureTraffic t = replay_texture_traces(cache, traces_of(granules));
   EXPECT_EQ(t.hits, 1u);
   EXPECT_EQ(t.misses, 3u);
 }
