@@ -13,11 +13,12 @@ namespace ontile {
 
 // Texture fetches are traced: appended to texel_buffer (the running thread's, shared with its
 // other tiles), and trace.texture_granules names the part this tile appended. With
-// record_fragment_accesses every
-// fragment's colour/depth accesses go to trace.fragments (for the IMR model). hierarchical_z
-// lets early-Z draws skip cells proven occluded (same results, less work).
+// record_fragment_accesses every fragment's colour/depth accesses go to trace.fragments (for
+// the IMR model). hierarchical_z lets early-Z draws skip cells proven occluded (same results,
+// less work).
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses, bool hierarchical_z = true);
+                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  bool hierarchical_z = true);
 
 }  // namespace ontile
