@@ -4,24 +4,14 @@
 #include <algorithm>
 
 namespace ontile {
+using namespace clip_plane;
 namespace {
-
-// w must stay positive so that the perspective divide is defined; any tiny positive w left is
-// then pushed outside by the guard-band planes.
-constexpr float kMinW = 1e-20f;
-
-enum Plane : int {
-  kNear, kFar, kPositiveW, kGuardRight, kGuardLeft, kGuardBottom, kGuardTop,
-  kViewRight, kViewLeft, kViewBottom, kViewTop, kPlaneCount
-};
-// Planes 0..6 clip; the viewport planes only serve trivial rejection.
-constexpr unsigned kClippingPlanes = (1u << kViewRight) - 1u;
 
 inline float plane_distance(int plane, const glm::vec4& v, const GuardBand& g) {
   switch (plane) {
     case kNear: return v.z;                    // Vulkan/D3D: z >= 0
     case kFar: return v.w - v.z;               // z <= w
-    case kPositiveW: return v.w - kMinW;
+    case kPositiveW: return v.w - kClipMinW;
     case kGuardRight: return g.x_max * v.w - v.x;
     case kGuardLeft: return v.x - g.x_min * v.w;
     case kGuardBottom: return v.y - g.y_min * v.w;  // +Y is up in clip space
@@ -32,17 +22,6 @@ inline float plane_distance(int plane, const glm::vec4& v, const GuardBand& g) {
     case kViewTop: return v.w - v.y;
     default: return 0.0f;
   }
-}
-
-// Straight-line form of plane_distance() < 0 for every plane (NaN counts as outside); this
-// runs for every vertex of every triangle, so it avoids the per-plane switch.
-unsigned outcode(const glm::vec4& v, const GuardBand& g) {
-  auto out = [](float d, int plane) { return d >= 0.0f ? 0u : 1u << plane; };
-  return out(v.z, kNear) | out(v.w - v.z, kFar) | out(v.w - kMinW, kPositiveW) |
-         out(g.x_max * v.w - v.x, kGuardRight) | out(v.x - g.x_min * v.w, kGuardLeft) |
-         out(v.y - g.y_min * v.w, kGuardBottom) | out(g.y_max * v.w - v.y, kGuardTop) |
-         out(v.w - v.x, kViewRight) | out(v.x + v.w, kViewLeft) | out(v.y + v.w, kViewBottom) |
-         out(v.w - v.y, kViewTop);
 }
 
 void clip_against_plane(int plane, int varying_count, const GuardBand& g, ClipPolygon& poly,
@@ -84,6 +63,17 @@ void clip_against_plane(int plane, int varying_count, const GuardBand& g, ClipPo
 
 }  // namespace
 
+// Straight-line form of plane_distance() < 0 for every plane: it runs for every vertex, so it
+// avoids the per-plane switch.
+unsigned clip_outcode(const glm::vec4& v, const GuardBand& g) {
+  auto out = [](float d, int plane) { return d >= 0.0f ? 0u : 1u << plane; };
+  return out(v.z, kNear) | out(v.w - v.z, kFar) | out(v.w - kClipMinW, kPositiveW) |
+         out(g.x_max * v.w - v.x, kGuardRight) | out(v.x - g.x_min * v.w, kGuardLeft) |
+         out(v.y - g.y_min * v.w, kGuardBottom) | out(g.y_max * v.w - v.y, kGuardTop) |
+         out(v.w - v.x, kViewRight) | out(v.x + v.w, kViewLeft) | out(v.y + v.w, kViewBottom) |
+         out(v.w - v.y, kViewTop);
+}
+
 GuardBand GuardBand::for_viewport(int width_px, int height_px) {
   // A little inside the fixed-point limit so that rounding never leaves it.
   const double limit_px = kGuardBandPx - 64;
@@ -98,13 +88,18 @@ GuardBand GuardBand::for_viewport(int width_px, int height_px) {
 
 ClipOutcome clip_triangle(const glm::vec4 position[3], const float* const varyings[3],
                           int varying_count, const GuardBand& guard, ClipPolygon& out) {
-  const unsigned c0 = outcode(position[0], guard);
-  const unsigned c1 = outcode(position[1], guard);
-  const unsigned c2 = outcode(position[2], guard);
+  const unsigned c0 = clip_outcode(position[0], guard);
+  const unsigned c1 = clip_outcode(position[1], guard);
+  const unsigned c2 = clip_outcode(position[2], guard);
   if (c0 & c1 & c2) return ClipOutcome::Outside;  // all on the wrong side of one plane
-  const unsigned needed = (c0 | c1 | c2) & kClippingPlanes;
+  const unsigned needed = (c0 | c1 | c2) & kClippingPlaneMask;
   if (needed == 0) return ClipOutcome::Inside;
+  return clip_against_planes(position, varyings, varying_count, guard, needed, out);
+}
 
+ClipOutcome clip_against_planes(const glm::vec4 position[3], const float* const varyings[3],
+                                int varying_count, const GuardBand& guard, unsigned planes,
+                                ClipPolygon& out) {
   out.count = 3;
   for (int i = 0; i < 3; ++i) {
     out.position[i] = position[i];
@@ -112,7 +107,7 @@ ClipOutcome clip_triangle(const glm::vec4 position[3], const float* const varyin
   }
   ClipPolygon scratch;
   for (int p = 0; p < kViewRight; ++p) {
-    if (!(needed & (1u << p))) continue;
+    if (!(planes & (1u << p))) continue;
     clip_against_plane(p, varying_count, guard, out, scratch);
     if (out.count < 3) return ClipOutcome::Outside;
   }

@@ -2,14 +2,10 @@
 #include "raster/triangle_setup.h"
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 
 namespace ontile {
 namespace {
-
-// Floor division for possibly negative numerators.
-int64_t floor_div(int64_t n, int64_t d) { return n >= 0 ? n / d : -((-n + d - 1) / d); }
 
 EdgeFunction make_edge(int32_t xj, int32_t yj, int32_t xk, int32_t yk) {
   const int64_t dx = int64_t{xk} - xj;
@@ -29,22 +25,19 @@ EdgeFunction make_edge(int32_t xj, int32_t yj, int32_t xk, int32_t yk) {
 
 SetupResult setup_triangle(const glm::vec4 clip[3], int width_px, int height_px, CullMode cull,
                            FrontFace front_face, TriangleSetup& t, int subpixel_bits) {
-  // Snapping grid: 2^subpixel_bits steps per pixel, each `grid_step` units of 1/256 px.
-  const double snap_scale = static_cast<double>(int64_t{1} << subpixel_bits);
-  const int64_t grid_step = kSubpixelScale >> subpixel_bits;
+  const SnappedVertex vertex[3] = {snap_vertex(clip[0], width_px, height_px, subpixel_bits),
+                                   snap_vertex(clip[1], width_px, height_px, subpixel_bits),
+                                   snap_vertex(clip[2], width_px, height_px, subpixel_bits)};
+  return setup_snapped_triangle(vertex, width_px, height_px, cull, front_face, t);
+}
+
+SetupResult setup_snapped_triangle(const SnappedVertex vertex[3], int width_px, int height_px,
+                                   CullMode cull, FrontFace front_face, TriangleSetup& t) {
   for (int i = 0; i < 3; ++i) {
-    // Viewport transform in double so snapping sees the exact rounding of the divide.
-    const double inv_w = 1.0 / static_cast<double>(clip[i].w);
-    const double ndc_x = clip[i].x * inv_w;
-    const double ndc_y = clip[i].y * inv_w;
-    const double sx = (ndc_x * 0.5 + 0.5) * width_px;
-    const double sy = (0.5 - ndc_y * 0.5) * height_px;  // +Y up in NDC, rows go down
-    // Round to the nearest point of the snapping grid (D3D11 3.2.4.1 snapping); scaling by a
-    // power of two is exact, so at 8 bits this is llround(sx * 256) as before.
-    t.x_fp[i] = static_cast<int32_t>(std::llround(sx * snap_scale) * grid_step);
-    t.y_fp[i] = static_cast<int32_t>(std::llround(sy * snap_scale) * grid_step);
-    t.depth[i] = static_cast<float>(clip[i].z * inv_w);
-    t.inv_w[i] = static_cast<float>(inv_w);
+    t.x_fp[i] = vertex[i].x_fp;
+    t.y_fp[i] = vertex[i].y_fp;
+    t.depth[i] = vertex[i].depth;
+    t.inv_w[i] = vertex[i].inv_w;
     t.vertex_order[i] = static_cast<uint8_t>(i);
   }
   int64_t area2 = (int64_t{t.x_fp[1]} - t.x_fp[0]) * (int64_t{t.y_fp[2]} - t.y_fp[0]) -
@@ -70,15 +63,16 @@ SetupResult setup_triangle(const glm::vec4 clip[3], int width_px, int height_px,
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     t.edge[i] = make_edge(t.x_fp[j], t.y_fp[j], t.x_fp[k], t.y_fp[k]);
   }
-  // Conservative pixel range: any sample inside a pixel may be covered.
+  // Conservative pixel range: any sample inside a pixel may be covered. The arithmetic shift
+  // is floor division by kSubpixelScale, negative positions included (C++20 [expr.shift]).
   const int32_t min_xf = std::min({t.x_fp[0], t.x_fp[1], t.x_fp[2]});
   const int32_t max_xf = std::max({t.x_fp[0], t.x_fp[1], t.x_fp[2]});
   const int32_t min_yf = std::min({t.y_fp[0], t.y_fp[1], t.y_fp[2]});
   const int32_t max_yf = std::max({t.y_fp[0], t.y_fp[1], t.y_fp[2]});
-  t.min_x = static_cast<int>(std::max<int64_t>(floor_div(min_xf, kSubpixelScale), 0));
-  t.min_y = static_cast<int>(std::max<int64_t>(floor_div(min_yf, kSubpixelScale), 0));
-  t.max_x = static_cast<int>(std::min<int64_t>(floor_div(max_xf, kSubpixelScale), width_px - 1));
-  t.max_y = static_cast<int>(std::min<int64_t>(floor_div(max_yf, kSubpixelScale), height_px - 1));
+  t.min_x = std::max(min_xf >> kSubpixelBits, 0);
+  t.min_y = std::max(min_yf >> kSubpixelBits, 0);
+  t.max_x = std::min(max_xf >> kSubpixelBits, width_px - 1);
+  t.max_y = std::min(max_yf >> kSubpixelBits, height_px - 1);
   if (t.min_x > t.max_x || t.min_y > t.max_y) return SetupResult::OutsideViewport;
   return SetupResult::Ok;
 }

@@ -35,6 +35,47 @@ struct TriangleSetup {
 
 enum class SetupResult { Ok, Culled, ZeroArea, OutsideViewport };
 
+// Nearest integer, halfway cases away from zero: exactly std::llround(x) for finite |x| < 2^63,
+// without the libm call. The cast truncates toward zero and x - trunc(x) is exact in binary
+// floating point (Sterbenz's lemma for |x| >= 1, trivially below), so the tie test is exact.
+inline int64_t round_half_away_from_zero(double x) {
+  const int64_t truncated = static_cast<int64_t>(x);
+  const double fraction = x - static_cast<double>(truncated);
+  return truncated + int64_t{fraction >= 0.5} - int64_t{fraction <= -0.5};
+}
+
+// One vertex after the viewport transform and snapping, as setup consumes it. No member
+// initialisers: binning allocates one per shaded vertex and snap_vertex() writes all fields.
+struct SnappedVertex {
+  int32_t x_fp, y_fp;  // 1/256 px units, y down
+  float depth;         // z / w
+  float inv_w;         // 1 / w
+};
+
+// Viewport transform and snapping of one clip-space vertex (w > 0, inside the guard band) to
+// the nearest multiple of 2^-subpixel_bits px. Binning snaps each shaded vertex once per draw
+// with this and sets up every triangle that needs no clipping from the shared results.
+inline SnappedVertex snap_vertex(const glm::vec4& clip, int width_px, int height_px,
+                                 int subpixel_bits) {
+  // Snapping grid: 2^subpixel_bits steps per pixel, each `grid_step` units of 1/256 px.
+  const double snap_scale = static_cast<double>(int64_t{1} << subpixel_bits);
+  const int64_t grid_step = kSubpixelScale >> subpixel_bits;
+  // Viewport transform in double so snapping sees the exact rounding of the divide.
+  const double inv_w = 1.0 / static_cast<double>(clip.w);
+  const double ndc_x = clip.x * inv_w;
+  const double ndc_y = clip.y * inv_w;
+  const double sx = (ndc_x * 0.5 + 0.5) * width_px;
+  const double sy = (0.5 - ndc_y * 0.5) * height_px;  // +Y up in NDC, rows go down
+  // Round to the nearest point of the snapping grid (D3D11 3.2.4.1 snapping); scaling by a
+  // power of two is exact, so at 8 bits this is llround(sx * 256).
+  SnappedVertex v;
+  v.x_fp = static_cast<int32_t>(round_half_away_from_zero(sx * snap_scale) * grid_step);
+  v.y_fp = static_cast<int32_t>(round_half_away_from_zero(sy * snap_scale) * grid_step);
+  v.depth = static_cast<float>(clip.z * inv_w);
+  v.inv_w = static_cast<float>(inv_w);
+  return v;
+}
+
 // clip_positions must have w > 0 and lie inside the guard band (see clip.h). Vertices snap to
 // the nearest multiple of 2^-subpixel_bits px (kMinSubpixelBits..kSubpixelBits; D3D11 uses 8,
 // Vulkan allows any precision >= 4); x_fp/y_fp stay in 1/256 px units either way, so coverage,
@@ -42,5 +83,9 @@ enum class SetupResult { Ok, Culled, ZeroArea, OutsideViewport };
 SetupResult setup_triangle(const glm::vec4 clip_positions[3], int viewport_width_px,
                            int viewport_height_px, CullMode cull, FrontFace front_face,
                            TriangleSetup& out, int subpixel_bits = kSubpixelBits);
+// The same from vertices snap_vertex() already transformed and snapped.
+SetupResult setup_snapped_triangle(const SnappedVertex vertex[3], int viewport_width_px,
+                                   int viewport_height_px, CullMode cull, FrontFace front_face,
+                                   TriangleSetup& out);
 
 }  // namespace ontile

@@ -2,71 +2,47 @@
 // and binning, in parallel chunks whose outputs are concatenated in submission order.
 #include <algorithm>
 #include <atomic>
-#include <cmath>
+#include <bit>
 
 #include <tbb/parallel_for.h>
 
 #include "raster/clip.h"
 #include "tiler/parameter_buffer.h"
+#include "tiler/vertex_stage.h"
 #include "util/error.h"
 
 namespace ontile {
 namespace {
 
-constexpr uint32_t kVertexGrain = 2048;
-
-struct ShadedDraw {
-  int varying_count = 0;
-  std::vector<glm::vec4> positions;
-  std::vector<float> varyings;
+// One (tile, triangle) pair of a chunk, in submission order.
+struct TileEntry {
+  uint32_t tile;
+  uint32_t triangle;  // chunk-local
 };
 
-ShadedDraw shade_vertices(const DrawCall& draw, GeometryCounters& counters) {
-  ShadedDraw shaded;
-  shaded.varying_count = draw.vertex_shader->varying_count();
-  if (shaded.varying_count < 0 || shaded.varying_count > kMaxVaryings) {
-    throw Error("vertex shader declares " + std::to_string(shaded.varying_count) +
-                " varyings (at most " + std::to_string(kMaxVaryings) + ")");
-  }
-  const int n = shaded.varying_count;
-  shaded.positions.resize(draw.vertex_count);
-  shaded.varyings.resize(static_cast<size_t>(draw.vertex_count) * n);
-  std::atomic<uint64_t> sanitized{0};
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, draw.vertex_count, kVertexGrain),
-                    [&](const tbb::blocked_range<uint32_t>& r) {
-    float* var = shaded.varyings.data() + static_cast<size_t>(r.begin()) * n;
-    draw.vertex_shader->shade(r.begin(), r.size(), shaded.positions.data() + r.begin(), var);
-    // A NaN/Inf varying would poison every pixel it touches; replace it and count it.
-    uint64_t bad = 0;
-    for (size_t i = 0; i < r.size() * n; ++i) {
-      if (!std::isfinite(var[i])) { var[i] = 0.0f; ++bad; }
-    }
-    if (bad) sanitized += bad;
-  });
-  counters.vertices_shaded += draw.vertex_count;
-  counters.varyings_sanitized += sanitized.load();
-  return shaded;
-}
-
-// Unique vertices the index buffer references: what a vertex fetch reads from memory.
-uint64_t count_unique_vertices(const DrawCall& draw) {
-  std::vector<uint8_t> seen(draw.vertex_count, 0);
-  uint64_t unique = 0;
-  for (uint32_t i = 0; i < draw.index_count; ++i) {
-    const uint32_t v = draw.indices[i];
-    if (v < draw.vertex_count && !seen[v]) { seen[v] = 1; ++unique; }
-  }
-  return unique;
-}
+// Pixel to tile column/row. Tile sizes are powers of two (the executor requires it and tile-size
+// reduction halves them), which makes this a shift; other sizes still divide correctly.
+struct TileIndexer {
+  int width_px, height_px, shift_x, shift_y, tiles_x;
+  explicit TileIndexer(const TileGrid& g)
+      : width_px(g.tile_width_px), height_px(g.tile_height_px),
+        shift_x(std::has_single_bit(static_cast<unsigned>(g.tile_width_px))
+                    ? std::countr_zero(static_cast<unsigned>(g.tile_width_px)) : -1),
+        shift_y(std::has_single_bit(static_cast<unsigned>(g.tile_height_px))
+                    ? std::countr_zero(static_cast<unsigned>(g.tile_height_px)) : -1),
+        tiles_x(g.tiles_x()) {}
+  // px >= 0, so the shift equals the division.
+  int column(int px) const { return shift_x >= 0 ? px >> shift_x : px / width_px; }
+  int row(int py) const { return shift_y >= 0 ? py >> shift_y : py / height_px; }
+};
 
 struct Chunk {
   uint32_t subpass = 0, draw = 0;
   uint32_t first_triangle = 0, triangle_count = 0;
   // Outputs.
-  std::vector<BinnedTriangle>& triangles;
-  std::vector<float>& varyings;
-  std::vector<uint32_t> entry_tile;      // tile of each (tile, triangle) pair
-  std::vector<uint32_t> entry_triangle;  // chunk-local triangle of each pair
+  UninitializedVector<BinnedTriangle>& triangles;
+  UninitializedVector<float>& varyings;
+  UninitializedVector<TileEntry> entries;
   uint32_t clipped_vertices = 0;
   GeometryCounters counters;
 };
@@ -84,85 +60,113 @@ bool triangle_touches_tile(const TriangleSetup& t, int64_t x0_fp, int64_t y0_fp,
 }
 
 void bin_into_tiles(const TriangleSetup& t, uint32_t local_index, const TileGrid& grid,
-                    Chunk& chunk) {
-  const int tx0 = t.min_x / grid.tile_width_px, tx1 = t.max_x / grid.tile_width_px;
-  const int ty0 = t.min_y / grid.tile_height_px, ty1 = t.max_y / grid.tile_height_px;
-  const bool single_tile = tx0 == tx1 && ty0 == ty1;
+                    const TileIndexer& tiles, Chunk& chunk) {
+  const int tx0 = tiles.column(t.min_x), tx1 = tiles.column(t.max_x);
+  const int ty0 = tiles.row(t.min_y), ty1 = tiles.row(t.max_y);
+  const int tiles_x = tiles.tiles_x;
+  if (tx0 == tx1 && ty0 == ty1) {  // most triangles: no edge tests needed
+    chunk.entries.push_back({static_cast<uint32_t>(ty0 * tiles_x + tx0), local_index});
+    return;
+  }
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
-      if (!single_tile) {
-        const int64_t x0 = int64_t{tx} * grid.tile_width_px * kSubpixelScale;
-        const int64_t y0 = int64_t{ty} * grid.tile_height_px * kSubpixelScale;
-        const int64_t x1 = std::min<int64_t>((tx + 1) * grid.tile_width_px, grid.width_px) *
-                               kSubpixelScale - 1;
-        const int64_t y1 = std::min<int64_t>((ty + 1) * grid.tile_height_px, grid.height_px) *
-                               kSubpixelScale - 1;
-        if (!triangle_touches_tile(t, x0, y0, x1, y1)) continue;
-      }
-      chunk.entry_tile.push_back(static_cast<uint32_t>(ty * grid.tiles_x() + tx));
-      chunk.entry_triangle.push_back(local_index);
+      const int64_t x0 = int64_t{tx} * grid.tile_width_px * kSubpixelScale;
+      const int64_t y0 = int64_t{ty} * grid.tile_height_px * kSubpixelScale;
+      const int64_t x1 = std::min<int64_t>((tx + 1) * grid.tile_width_px, grid.width_px) *
+                             kSubpixelScale - 1;
+      const int64_t y1 = std::min<int64_t>((ty + 1) * grid.tile_height_px, grid.height_px) *
+                             kSubpixelScale - 1;
+      if (!triangle_touches_tile(t, x0, y0, x1, y1)) continue;
+      chunk.entries.push_back({static_cast<uint32_t>(ty * tiles_x + tx), local_index});
     }
   }
 }
 
-void emit_triangle(const TriangleSetup& setup, const float* const vertex_varyings[3],
-                   const uint32_t vertex_ids[3], int varying_count, uint32_t primitive_id,
-                   const TileGrid& grid, Chunk& chunk) {
-  BinnedTriangle bt;
-  bt.setup = setup;
-  for (int k = 0; k < 3; ++k) bt.vertex[k] = vertex_ids[k];
-  bt.subpass = chunk.subpass;
-  bt.draw = chunk.draw;
-  bt.primitive_id = primitive_id;
-  bt.varying_offset = static_cast<uint32_t>(chunk.varyings.size());
-  for (int slot = 0; slot < 3; ++slot) {
-    const float* src = vertex_varyings[setup.vertex_order[slot]];
-    chunk.varyings.insert(chunk.varyings.end(), src, src + varying_count);
+// Set-up records are written in place: setup() opens a record at the end of the chunk (or
+// returns the one still open) for setup to fill, and emit() completes it (setup leaves no field
+// of an Ok triangle unset). A failed setup leaves the open record to the next triangle, and
+// finish() drops it if no triangle used it.
+class RecordSlot {
+ public:
+  explicit RecordSlot(Chunk& chunk) : chunk_(chunk) {}
+  TriangleSetup& setup() {
+    if (!open_) {
+      chunk_.triangles.emplace_back();
+      open_ = true;
+    }
+    return chunk_.triangles.back().setup;
   }
-  const uint32_t local_index = static_cast<uint32_t>(chunk.triangles.size());
-  chunk.triangles.push_back(bt);
-  bin_into_tiles(setup, local_index, grid, chunk);
-}
+  void emit(const float* const vertex_varyings[3], const uint32_t vertex_ids[3],
+            int varying_count, uint32_t primitive_id, const TileGrid& grid,
+            const TileIndexer& tiles) {
+    BinnedTriangle& bt = chunk_.triangles.back();
+    for (int k = 0; k < 3; ++k) bt.vertex[k] = vertex_ids[k];
+    bt.subpass = chunk_.subpass;
+    bt.draw = chunk_.draw;
+    bt.primitive_id = primitive_id;
+    const size_t offset = chunk_.varyings.size();
+    bt.varying_offset = static_cast<uint32_t>(offset);
+    chunk_.varyings.resize(offset + 3 * static_cast<size_t>(varying_count));
+    float* dst = chunk_.varyings.data() + offset;
+    for (int slot = 0; slot < 3; ++slot, dst += varying_count) {
+      const float* src = vertex_varyings[bt.setup.vertex_order[slot]];
+      for (int a = 0; a < varying_count; ++a) dst[a] = src[a];
+    }
+    open_ = false;
+    bin_into_tiles(bt.setup, static_cast<uint32_t>(chunk_.triangles.size() - 1), grid, tiles,
+                   chunk_);
+  }
+  void finish() {
+    if (open_) chunk_.triangles.pop_back();
+    open_ = false;
+  }
 
-void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGrid& grid,
+ private:
+  Chunk& chunk_;
+  bool open_ = false;
+};
+
+void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& grid,
                    const GuardBand& guard, Chunk& chunk) {
   const int n = shaded.varying_count;
   const uint32_t vertex_bytes = post_transform_vertex_bytes(n);
   GeometryCounters& c = chunk.counters;
   chunk.triangles.reserve(chunk.triangle_count);
   chunk.varyings.reserve(static_cast<size_t>(chunk.triangle_count) * 3 * n);
-  chunk.entry_tile.reserve(chunk.triangle_count * 2);
-  chunk.entry_triangle.reserve(chunk.triangle_count * 2);
+  chunk.entries.reserve(chunk.triangle_count * 2);
+  const TileIndexer tiles(grid);
+  RecordSlot record(chunk);
   ClipPolygon polygon;
   for (uint32_t tri = chunk.first_triangle; tri < chunk.first_triangle + chunk.triangle_count;
        ++tri) {
     ++c.triangles_submitted;
-    glm::vec4 pos[3];
-    const float* var[3];
-    bool finite = true;
+    const uint32_t* ids = draw.indices + size_t{3} * tri;
     for (int k = 0; k < 3; ++k) {
-      const uint32_t v = draw.indices[3 * tri + k];
-      if (v >= draw.vertex_count) {
-        throw Error("draw index " + std::to_string(v) + " out of range (vertex count " +
+      if (ids[k] >= draw.vertex_count) {
+        throw Error("draw index " + std::to_string(ids[k]) + " out of range (vertex count " +
                     std::to_string(draw.vertex_count) + ")");
       }
-      pos[k] = shaded.positions[v];
-      var[k] = shaded.varyings.data() + static_cast<size_t>(v) * n;
-      finite = finite && std::isfinite(pos[k].x) && std::isfinite(pos[k].y) &&
-               std::isfinite(pos[k].z) && std::isfinite(pos[k].w);
+      shaded.referenced[ids[k]].store(1, std::memory_order_relaxed);
     }
-    if (!finite) { ++c.triangles_non_finite; continue; }
+    const unsigned c0 = shaded.outcode[ids[0]], c1 = shaded.outcode[ids[1]],
+                   c2 = shaded.outcode[ids[2]];
+    if ((c0 | c1 | c2) & kNonFiniteVertex) { ++c.triangles_non_finite; continue; }
+    // All on the wrong side of one plane (clip_triangle's trivial rejection).
+    if (c0 & c1 & c2) { ++c.triangles_outside; continue; }
+    const unsigned planes = (c0 | c1 | c2) & kClippingPlaneMask;
     const uint32_t primitive_id = draw.primitive_id_base + tri;
-    const ClipOutcome outcome = clip_triangle(pos, var, n, guard, polygon);
-    if (outcome == ClipOutcome::Outside) { ++c.triangles_outside; continue; }
+    const float* var[3];
+    for (int k = 0; k < 3; ++k) var[k] = shaded.varyings.data() + static_cast<size_t>(ids[k]) * n;
 
-    TriangleSetup setup;
-    if (outcome == ClipOutcome::Inside) {
-      const SetupResult r = setup_triangle(pos, grid.width_px, grid.height_px, draw.raster.cull,
-                                           draw.raster.front_face, setup, grid.subpixel_bits);
+    if (planes == 0) {
+      // Inside every clipping plane: set up from the vertices snapped once per draw.
+      const SnappedVertex vertex[3] = {shaded.snapped[ids[0]], shaded.snapped[ids[1]],
+                                       shaded.snapped[ids[2]]};
+      const SetupResult r = setup_snapped_triangle(vertex, grid.width_px, grid.height_px,
+                                                   draw.raster.cull, draw.raster.front_face,
+                                                   record.setup());
       if (r == SetupResult::Ok) {
-        const uint32_t ids[3] = {draw.indices[3 * tri], draw.indices[3 * tri + 1], draw.indices[3 * tri + 2]};
-        emit_triangle(setup, var, ids, n, primitive_id, grid, chunk);
+        record.emit(var, ids, n, primitive_id, grid, tiles);
       } else if (r == SetupResult::Culled) {
         ++c.triangles_culled;
       } else if (r == SetupResult::ZeroArea) {
@@ -170,6 +174,12 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
       } else {
         ++c.triangles_outside;
       }
+      continue;
+    }
+    const glm::vec4 pos[3] = {shaded.positions[ids[0]], shaded.positions[ids[1]],
+                              shaded.positions[ids[2]]};
+    if (clip_against_planes(pos, var, n, guard, planes, polygon) == ClipOutcome::Outside) {
+      ++c.triangles_outside;
       continue;
     }
     // Clipped: the polygon's vertices are new post-transform vertices; draw it as a fan.
@@ -182,12 +192,13 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
       const float* fan_var[3] = {polygon.varyings[0], polygon.varyings[i],
                                  polygon.varyings[i + 1]};
       const SetupResult r = setup_triangle(fan_pos, grid.width_px, grid.height_px,
-                                           draw.raster.cull, draw.raster.front_face, setup,
-                                           grid.subpixel_bits);
+                                           draw.raster.cull, draw.raster.front_face,
+                                           record.setup(), grid.subpixel_bits);
       if (r == SetupResult::Ok) {
         const uint32_t base = kClippedVertex | chunk.clipped_vertices;
-        const uint32_t ids[3] = {base, base + static_cast<uint32_t>(i), base + static_cast<uint32_t>(i + 1)};
-        emit_triangle(setup, fan_var, ids, n, primitive_id, grid, chunk);
+        const uint32_t fan_ids[3] = {base, base + static_cast<uint32_t>(i),
+                                     base + static_cast<uint32_t>(i + 1)};
+        record.emit(fan_var, fan_ids, n, primitive_id, grid, tiles);
         any_emitted = true;
       }
       any_culled = any_culled || r == SetupResult::Culled;
@@ -195,10 +206,11 @@ void process_chunk(const DrawCall& draw, const ShadedDraw& shaded, const TileGri
     chunk.clipped_vertices += static_cast<uint32_t>(polygon.count);
     if (!any_emitted) ++(any_culled ? c.triangles_culled : c.triangles_outside);
   }
+  record.finish();
   c.triangles_binned += chunk.triangles.size();
-  c.tile_list_entries += chunk.entry_tile.size();
+  c.tile_list_entries += chunk.entries.size();
   c.parameter_bytes_written += uint64_t{kPrimitiveRecordBytes} * chunk.triangles.size() +
-                               uint64_t{kTileListEntryBytes} * chunk.entry_tile.size();
+                               uint64_t{kTileListEntryBytes} * chunk.entries.size();
 }
 
 }  // namespace
@@ -221,12 +233,8 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
         throw Error("pass '" + pass.name + "': draw with " + std::to_string(draw.index_count) +
                     " indices (not a multiple of 3)");
       }
-      shaded[s].push_back(shade_vertices(draw, pb.counters));
-      const uint64_t unique = count_unique_vertices(draw);
+      shaded[s].push_back(shade_draw(draw, grid, guard, pb.counters));
       pb.counters.index_bytes_read += uint64_t{draw.index_bytes} * draw.index_count;
-      pb.counters.vertex_bytes_read += unique * draw.input_vertex_bytes;
-      pb.counters.parameter_bytes_written +=
-          unique * post_transform_vertex_bytes(shaded[s].back().varying_count);
       const uint32_t triangles = draw.index_count / 3;
       for (uint32_t first = 0; first < triangles; first += kTrianglesPerChunk) {
         inputs.push_back({s, d, first, std::min(kTrianglesPerChunk, triangles - first)});
@@ -250,6 +258,15 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
     process_chunk(pass.subpasses[c.subpass].draws[c.draw], shaded[c.subpass][c.draw], grid, guard,
                   c);
   });
+  // Fetch traffic of the unique vertices each draw's indices referenced.
+  for (uint32_t s = 0; s < pass.subpasses.size(); ++s) {
+    for (uint32_t d = 0; d < pass.subpasses[s].draws.size(); ++d) {
+      const uint64_t unique = count_referenced_vertices(shaded[s][d]);
+      pb.counters.vertex_bytes_read += unique * pass.subpasses[s].draws[d].input_vertex_bytes;
+      pb.counters.parameter_bytes_written +=
+          unique * post_transform_vertex_bytes(shaded[s][d].varying_count);
+    }
+  }
   shaded.clear();
   for (size_t i = 0; i < chunks.size(); ++i) {
     pb.counters.add(chunks[i].counters);
@@ -261,7 +278,7 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
   const int tile_count = grid.tile_count();
   pb.tile_offsets.assign(tile_count + 1, 0);
   for (const Chunk& c : chunks) {
-    for (uint32_t tile : c.entry_tile) ++pb.tile_offsets[tile + 1];
+    for (const TileEntry& e : c.entries) ++pb.tile_offsets[e.tile + 1];
   }
   for (int t = 0; t < tile_count; ++t) pb.tile_offsets[t + 1] += pb.tile_offsets[t];
   pb.tile_entries.resize(pb.tile_offsets.back());
@@ -269,8 +286,8 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
   for (size_t i = 0; i < chunks.size(); ++i) {
     const Chunk& c = chunks[i];
     const uint32_t chunk_bits = static_cast<uint32_t>(i) << kChunkLocalBits;
-    for (size_t e = 0; e < c.entry_tile.size(); ++e) {
-      pb.tile_entries[cursor[c.entry_tile[e]]++] = chunk_bits | c.entry_triangle[e];
+    for (const TileEntry& e : c.entries) {
+      pb.tile_entries[cursor[e.tile]++] = chunk_bits | e.triangle;
     }
   }
   return pb;

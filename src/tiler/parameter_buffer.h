@@ -8,6 +8,7 @@
 #include "raster/triangle_setup.h"
 #include "tiler/pass_report.h"
 #include "tiler/render_pass.h"
+#include "util/uninitialized_vector.h"
 
 namespace ontile {
 
@@ -45,8 +46,9 @@ inline uint32_t post_transform_vertex_bytes(int varying_count) {
 // The triangles set up from one run of consecutive input triangles of a draw. Binning works
 // chunk by chunk in parallel and the chunks stay where they were built (no merge copy).
 struct TriangleChunk {
-  std::vector<BinnedTriangle> triangles;
-  std::vector<float> varyings;
+  // Grown one record at a time and then written in full, so neither is zero-filled first.
+  UninitializedVector<BinnedTriangle> triangles;
+  UninitializedVector<float> varyings;
   uint32_t clipped_vertices = 0;  // post-transform vertices clipping added
 };
 
@@ -60,7 +62,7 @@ struct ParameterBuffer {
   TileGrid grid;
   std::vector<TriangleChunk> chunks;
   std::vector<uint32_t> tile_offsets;  // tile_count + 1 entries
-  std::vector<uint32_t> tile_entries;  // triangle references, per tile in submission order
+  UninitializedVector<uint32_t> tile_entries;  // triangle references, per tile in submission order
   GeometryCounters counters;
 
   const BinnedTriangle& triangle(uint32_t ref) const {
