@@ -2,6 +2,7 @@
 // and trilinear filtering, repeat/clamp/mirror wrapping, LOD from 2x2-quad derivatives, and
 // each texture's place in the simulated address space the texture-cache model sees.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -71,6 +72,31 @@ class Texture2D {
 
   // One texel, decoded to linear float. x, y must be inside the level.
   glm::vec4 fetch(int level, int x, int y) const;
+
+  // One level's texels for kernels that compute their own texel indices and report their own
+  // texel trace: load() decodes exactly as fetch() does, without its per-call format dispatch
+  // and without tracing. Valid while the texture lives.
+  struct TexelView {
+    const float* texels32f = nullptr;     // Float32: RGBA floats, row-major; null otherwise
+    const uint8_t* texels8 = nullptr;     // Unorm8/Srgb8: RGBA bytes, row-major
+    const float* rgb_decode = nullptr;    // 8-bit: byte -> linear float for R, G, B
+    const float* alpha_decode = nullptr;  // 8-bit: byte -> float for A
+    int width = 0, height = 0;
+    uint64_t address = 0;                 // simulated byte address of texel (0, 0)
+    uint64_t memory_bytes_per_texel = 0;
+
+    glm::vec4 load(int x, int y) const {
+      const size_t index = (static_cast<size_t>(y) * static_cast<size_t>(width) + x) * 4;
+      if (texels32f) {
+        const float* t = texels32f + index;
+        return {t[0], t[1], t[2], t[3]};
+      }
+      const uint8_t* t = texels8 + index;
+      return {rgb_decode[t[0]], rgb_decode[t[1]], rgb_decode[t[2]], alpha_decode[t[3]]};
+    }
+  };
+  TexelView texel_view(int level) const;  // defined in texel_view.cpp
+
   // Filtered sample at uv (0..1 spans the texture; v = 0 is the top row, as in glTF) and an
   // explicit level of detail (0 = base level; the sampler's lod_bias is added, as in GL/Vulkan).
   // Non-finite uv components are treated as 0 and a NaN lod as 0, so sampling never reads out

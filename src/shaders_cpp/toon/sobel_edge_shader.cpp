@@ -1,12 +1,13 @@
 // Screen-space Sobel edges (see sobel_edge_shader.h).
 #include "shaders_cpp/toon/sobel_edge_shader.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
-#include "raster/texel_trace.h"
-#include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/full_screen.h"
+#include "shaders_cpp/toon/sobel_tap_trace.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -15,11 +16,9 @@ namespace {
 constexpr float kMinOneMinusDepth = 5.9604645e-8f;  // 2^-24
 // Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
 constexpr float kMaxExactTexelCoord = 16777216.0f;
-constexpr int kTapsPerAxis = 3;
-constexpr int kTaps = kTapsPerAxis * kTapsPerAxis;
-constexpr int kCentreTap = 4;
-// Distinct tap columns (or rows) of one quad: at most 3 per lane.
-constexpr int kAxisSlots = kQuadLanes * kTapsPerAxis;
+using sobel::kCentreTap;
+using sobel::kTaps;
+using sobel::kTapsPerAxis;
 
 // The texel index along one axis that Texture2D::sample_lod reads for a nearest, clamp-to-edge
 // sample of level 0 at normalized coordinate u (texture.cpp: finite_or_zero, texel_coord,
@@ -33,39 +32,6 @@ int nearest_clamped_texel(float u, int size) {
   const int i = static_cast<int>(std::floor(x));
   return i < 0 ? 0 : (i < size ? i : size - 1);
 }
-
-// The distinct texel indices along one axis that a quad's taps use, in order of first use:
-// a tap's texel is the cell (row slot, column slot) of a small grid shared by the quad's lanes.
-class AxisTexels {
- public:
-  int slot_of(int index) {
-    for (int s = 0; s < count_; ++s) {
-      if (indices_[s] == index) return s;
-    }
-    indices_[count_] = index;
-    return count_++;
-  }
-
- private:
-  int indices_[kAxisSlots];
-  int count_ = 0;
-};
-
-// One bit per grid cell: which texels of the quad have been read and decoded.
-class CellSet {
- public:
-  bool contains(int cell) const { return (words_[cell >> 6] >> (cell & 63)) & 1u; }
-  void insert(int cell) { words_[cell >> 6] |= uint64_t{1} << (cell & 63); }
-
- private:
-  uint64_t words_[(kAxisSlots * kAxisSlots + 63) / 64] = {};
-};
-
-// One lane's taps: tap k is texel (x[k % 3], y[k / 3]), grid cell cell[k].
-struct LaneTaps {
-  int x[kTapsPerAxis], y[kTapsPerAxis];
-  int cell[kTaps];
-};
 
 std::string size_text(const Texture2D& t) {
   return std::to_string(t.width()) + "x" + std::to_string(t.height());
@@ -133,12 +99,6 @@ glm::vec2 view_ray_scale(const glm::dmat4& projection) {
   return {static_cast<float>(1.0 / projection[0][0]), static_cast<float>(1.0 / projection[1][1])};
 }
 
-SobelEdgeShader::TexelAddressing SobelEdgeShader::addressing_of(const Texture2D* texture) {
-  if (!texture) return {};
-  return {texture->texel_address(0, 0, 0), static_cast<uint64_t>(texture->memory_bytes_per_texel()),
-          texture->width(), texture->height()};
-}
-
 SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
   if (!p_.color) throw Error("SobelEdgeShader: no scene colour texture");
   if (!p_.depth) throw Error("SobelEdgeShader: no depth texture");
@@ -153,148 +113,153 @@ SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
                 " far " + std::to_string(l.far_plane) +
                 (l.orthographic ? " (orthographic)" : " (perspective)"));
   }
-  tap_step_uv_ = glm::vec2(p_.thickness_px / static_cast<float>(p_.depth->width()),
-                           p_.thickness_px / static_cast<float>(p_.depth->height()));
-  color_addressing_ = addressing_of(p_.color);
-  depth_addressing_ = addressing_of(p_.depth);
-  normal_addressing_ = addressing_of(p_.normal);
-  border_addressing_ = addressing_of(p_.border);
+  color_ = p_.color->texel_view(0);
+  depth_ = p_.depth->texel_view(0);
+  if (p_.normal) normal_ = p_.normal->texel_view(0);
+  if (p_.border) border_ = p_.border->texel_view(0);
+  // Tap a of an axis is at uv + (a - 1) * step: the product rounded once, as the per-tap
+  // sampling computes it.
+  const glm::vec2 step(p_.thickness_px / static_cast<float>(depth_.width),
+                       p_.thickness_px / static_cast<float>(depth_.height));
+  for (int a = 0; a < kTapsPerAxis; ++a) {
+    const float offset = static_cast<float>(a - 1);
+    layout_.offset_u[a] = offset * step.x;
+    layout_.offset_v[a] = offset * step.y;
+  }
+  layout_.grid_width = depth_.width;
+  layout_.grid_height = depth_.height;
+  layout_.color_width = color_.width;
+  layout_.color_height = color_.height;
+  // linearize_depth's constants: f * n and f - n are each one rounding, wherever computed.
+  depth_decode_.mode = l.orthographic          ? sobel::DepthDecode::Orthographic
+                       : l.far_plane == 0.0f ? sobel::DepthDecode::InfinitePerspective
+                                             : sobel::DepthDecode::Perspective;
+  depth_decode_.near_plane = l.near_plane;
+  depth_decode_.far_times_near = l.far_plane * l.near_plane;
+  depth_decode_.far_minus_near = l.far_plane - l.near_plane;
+  edge_test_.depth_limit_scale = p_.depth_threshold * p_.depth_sensitivity;
+  edge_test_.has_normal = p_.normal != nullptr;
+  edge_test_.normal_threshold = p_.normal_threshold;
+  edge_test_.view_ray_scale = p_.view_ray_scale;
+  edge_test_.min_grazing_cosine = p_.min_grazing_cosine;
 }
 
-void SobelEdgeShader::shade_lanes(const glm::vec2 uv[kQuadLanes], uint8_t lane_mask,
-                                  glm::vec4 out[kQuadLanes]) const {
-  const auto active = [lane_mask](int lane) { return ((lane_mask >> lane) & 1u) != 0u; };
-  // Tap k of a lane is column offset k % 3 - 1 and row offset k / 3 - 1, in steps of
-  // tap_step_uv_; its uv is uv + offset * step per axis, as the per-tap sampling computed it.
-  // Depth, normal and border have the same size (checked at construction): the same texels.
-  const TexelAddressing& grid = depth_addressing_;
-  AxisTexels columns, rows;
-  LaneTaps taps[kQuadLanes];
-  int color_x[kQuadLanes], color_y[kQuadLanes];
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!active(lane)) continue;
-    LaneTaps& t = taps[lane];
-    int column_slot[kTapsPerAxis], row_slot[kTapsPerAxis];
-    for (int a = 0; a < kTapsPerAxis; ++a) {
-      const float offset = static_cast<float>(a - 1);
-      t.x[a] = nearest_clamped_texel(uv[lane].x + offset * tap_step_uv_.x, grid.width_px);
-      t.y[a] = nearest_clamped_texel(uv[lane].y + offset * tap_step_uv_.y, grid.height_px);
-      column_slot[a] = columns.slot_of(t.x[a]);
-      row_slot[a] = rows.slot_of(t.y[a]);
-    }
+glm::vec4 SobelEdgeShader::compose(const int tx[kTapsPerAxis], const int ty[kTapsPerAxis],
+                                   int color_x, int color_y, bool edge, int nearest_tap,
+                                   sobel::TapTrace& trace) const {
+  const glm::vec4 scene = color_.load(color_x, color_y);
+  if (!edge) return scene;
+  glm::vec4 border = p_.default_border_color;
+  if (p_.border) {
+    const int x = tx[nearest_tap % kTapsPerAxis], y = ty[nearest_tap / kTapsPerAxis];
+    trace.border(x, y);
+    border = border_.load(x, y);
+  }
+  return glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
+}
+
+glm::vec4 SobelEdgeShader::shade_one(glm::vec2 uv, sobel::TapTrace& trace) const {
+  int tx[kTapsPerAxis], ty[kTapsPerAxis];
+  for (int a = 0; a < kTapsPerAxis; ++a) {
+    tx[a] = nearest_clamped_texel(uv.x + layout_.offset_u[a], depth_.width);
+    ty[a] = nearest_clamped_texel(uv.y + layout_.offset_v[a], depth_.height);
+  }
+  float depth[kTaps], linear_z[kTaps];
+  for (int k = 0; k < kTaps; ++k) {
+    depth[k] = depth_.load(tx[k % 3], ty[k / 3]).x;
+    linear_z[k] = linearize_depth(depth[k], p_.depth_linearization);
+  }
+  // The centre keeps ties, so neighbouring bordered materials at equal depth keep their own line.
+  int nearest = kCentreTap;
+  for (int k = 0; k < kTaps; ++k) {
+    if (depth[k] < depth[nearest]) nearest = k;
+  }
+  float depth_limit = edge_test_.depth_limit_scale * linear_z[kCentreTap];
+  glm::vec3 normals[kTaps];
+  const auto normal_at = [&](int k) {
+    return decode_view_normal(normal_.load(tx[k % 3], ty[k / 3]), p_.normal_encoding);
+  };
+  if (p_.normal) {
+    normals[kCentreTap] = normal_at(kCentreTap);
+    depth_limit /= grazing_cosine(normals[kCentreTap], uv);
+  }
+  const bool depth_edge = sobel_magnitude(linear_z) > depth_limit;
+  bool edge = depth_edge;
+  if (!edge && p_.normal) {
     for (int k = 0; k < kTaps; ++k) {
-      t.cell[k] = row_slot[k / kTapsPerAxis] * kAxisSlots + column_slot[k % kTapsPerAxis];
+      if (k != kCentreTap) normals[k] = normal_at(k);
     }
-    color_x[lane] = nearest_clamped_texel(uv[lane].x, color_addressing_.width_px);
-    color_y[lane] = nearest_clamped_texel(uv[lane].y, color_addressing_.height_px);
+    edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
   }
-  // Decoded texels by grid cell, each read on first use.
-  float cell_depth[kAxisSlots * kAxisSlots], cell_linear_z[kAxisSlots * kAxisSlots];
-  glm::vec3 cell_normal[kAxisSlots * kAxisSlots];
-  CellSet depth_read, normal_read;
-  // What each lane read beyond its depth taps, for the trace.
-  bool read_all_normals[kQuadLanes] = {};
-  int border_tap[kQuadLanes] = {-1, -1, -1, -1};
-  {
-    // Reads here are not traced: the per-tap sequence is reported below.
-    const TexelTraceScope untraced(nullptr);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!active(lane)) continue;
-      const LaneTaps& t = taps[lane];
-      float depth[kTaps], linear_z[kTaps];
-      for (int k = 0; k < kTaps; ++k) {
-        const int cell = t.cell[k];
-        if (!depth_read.contains(cell)) {
-          cell_depth[cell] = p_.depth->fetch(0, t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]).x;
-          cell_linear_z[cell] = linearize_depth(cell_depth[cell], p_.depth_linearization);
-          depth_read.insert(cell);
-        }
-        depth[k] = cell_depth[cell];
-        linear_z[k] = cell_linear_z[cell];
-      }
-      // The centre keeps ties, so neighbouring bordered materials at equal depth keep their
-      // own line.
-      int nearest = kCentreTap;
-      for (int k = 0; k < kTaps; ++k) {
-        if (depth[k] < depth[nearest]) nearest = k;
-      }
-      float depth_limit = p_.depth_threshold * p_.depth_sensitivity * linear_z[kCentreTap];
-      const auto normal_at = [&](int k) {
-        const int cell = t.cell[k];
-        if (!normal_read.contains(cell)) {
-          cell_normal[cell] = decode_view_normal(
-              p_.normal->fetch(0, t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]),
-              p_.normal_encoding);
-          normal_read.insert(cell);
-        }
-        return cell_normal[cell];
-      };
-      glm::vec3 normals[kTaps];
-      if (p_.normal) {
-        normals[kCentreTap] = normal_at(kCentreTap);
-        depth_limit /= grazing_cosine(normals[kCentreTap], uv[lane]);
-      }
-      bool edge = sobel_magnitude(linear_z) > depth_limit;
-      if (!edge && p_.normal) {  // the other normal taps only matter when depth found no edge
-        for (int k = 0; k < kTaps; ++k) {
-          if (k != kCentreTap) normals[k] = normal_at(k);
-        }
-        read_all_normals[lane] = true;
-        edge = sobel_vector_magnitude(normals) > p_.normal_threshold;
-      }
-      const glm::vec4 scene = p_.color->fetch(0, color_x[lane], color_y[lane]);
-      if (!edge) {
-        out[lane] = scene;
-        continue;
-      }
-      glm::vec4 border = p_.default_border_color;
-      if (p_.border) {
-        border = p_.border->fetch(0, t.x[nearest % kTapsPerAxis], t.y[nearest / kTapsPerAxis]);
-        border_tap[lane] = nearest;
-      }
-      out[lane] = glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
+  const int color_x = nearest_clamped_texel(uv.x, color_.width);
+  const int color_y = nearest_clamped_texel(uv.y, color_.height);
+  // The other normal taps only matter when depth found no edge.
+  trace.fragment(tx, ty, color_x, color_y, p_.normal && !depth_edge);
+  return compose(tx, ty, color_x, color_y, edge, nearest, trace);
+}
+
+void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count, uint64_t active,
+                                      float (&colour)[4][kBatchFragments]) const {
+  const auto store = [&colour](int f, glm::vec4 c) {
+    for (int ch = 0; ch < 4; ++ch) colour[ch][f] = c[ch];
+  };
+  sobel::TapTrace trace(color_, depth_, p_.normal ? &normal_ : nullptr,
+                        p_.border ? &border_ : nullptr);
+  sobel::FragmentTaps taps;
+  sobel::tap_texels(u, v, count, active, layout_, taps);
+  const int64_t box_width = int64_t{taps.x1} - taps.x0 + 1;
+  const int64_t box_height = int64_t{taps.y1} - taps.y0 + 1;
+  if (active == 0) return;
+  if (box_width * box_height > sobel::kMaxGridTexels) {
+    for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+      const int f = std::countr_zero(rest);
+      store(f, shade_one({u[f], v[f]}, trace));
     }
+    return;
   }
-  // The texel trace of sampling every tap separately, lane by lane (see the class comment).
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!active(lane)) continue;
-    const LaneTaps& t = taps[lane];
-    const auto record_tap = [&t](const TexelAddressing& a, int k) {
-      record_texel_address(a.address(t.x[k % kTapsPerAxis], t.y[k / kTapsPerAxis]));
-    };
-    for (int k = 0; k < kTaps; ++k) record_tap(depth_addressing_, k);
-    if (p_.normal) {
-      record_tap(normal_addressing_, kCentreTap);
-      if (read_all_normals[lane]) {
-        for (int k = 0; k < kTaps; ++k) {
-          if (k != kCentreTap) record_tap(normal_addressing_, k);
-        }
-      }
-    }
-    record_texel_address(color_addressing_.address(color_x[lane], color_y[lane]));
-    if (border_tap[lane] >= 0) record_tap(border_addressing_, border_tap[lane]);
+  sobel::NeighbourhoodGrid grid;
+  grid.x0 = taps.x0;
+  grid.y0 = taps.y0;
+  grid.width = static_cast<int>(box_width);
+  grid.height = static_cast<int>(box_height);
+  sobel::decode_grid(depth_, p_.normal ? &normal_ : nullptr, p_.normal_encoding, depth_decode_,
+                     grid);
+  sobel::FragmentEdges edges;
+  sobel::find_edges(u, v, count, taps, grid, edge_test_, edges);
+  for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+    const int f = std::countr_zero(rest);
+    const int tx[kTapsPerAxis] = {taps.x[0][f], taps.x[1][f], taps.x[2][f]};
+    const int ty[kTapsPerAxis] = {taps.y[0][f], taps.y[1][f], taps.y[2][f]};
+    const bool all_normals = p_.normal && ((edges.depth_edge >> f) & 1u) == 0u;
+    trace.fragment(tx, ty, taps.color_x[f], taps.color_y[f], all_normals);
+    store(f, compose(tx, ty, taps.color_x[f], taps.color_y[f], (edges.edge >> f) & 1u,
+                     edges.nearest_tap[f], trace));
   }
 }
 
 glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
-  const glm::vec2 lane_uv[kQuadLanes] = {uv, uv, uv, uv};
-  glm::vec4 out[kQuadLanes];
-  shade_lanes(lane_uv, 0x1, out);
-  return out[0];
+  // One active fragment in a padded vector of 16 (the kernels' granularity).
+  constexpr int kPadded = 16;
+  float u[kPadded], v[kPadded];
+  for (int f = 0; f < kPadded; ++f) {
+    u[f] = uv.x;
+    v[f] = uv.y;
+  }
+  float colour[4][kBatchFragments];
+  shade_fragments(u, v, kPadded, 1u, colour);
+  return {colour[0][0], colour[1][0], colour[2][0], colour[3][0]};
 }
 
 void SobelEdgeShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
-  // Quad by quad: shade_lanes shares texel reads within a quad and records the trace per quad,
-  // so the reads and their order are those of shading the quads one at a time.
+  // Fragments in batch order are quads in order, lanes in order: the trace order of shading
+  // the quads one at a time.
+  uint64_t active = 0;
   for (int q = 0; q < batch.quad_count; ++q) {
-    glm::vec2 uv[kQuadLanes];
-    batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);
-    glm::vec4 colour[kQuadLanes];
-    shade_lanes(uv, batch.lane_mask[q], colour);
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (batch.active(q * kQuadLanes + lane)) out.set(0, q * kQuadLanes + lane, colour[lane]);
-    }
+    active |= uint64_t{batch.lane_mask[q]} << (q * kQuadLanes);
   }
+  shade_fragments(batch.varyings[FullScreenVertexShader::kUv],
+                  batch.varyings[FullScreenVertexShader::kUv + 1], batch.padded_fragment_count(),
+                  active, out.color[0]);
 }
 
 }  // namespace ontile

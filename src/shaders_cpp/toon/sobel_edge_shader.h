@@ -8,9 +8,13 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/toon/sobel_edge_kernel.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 
 namespace ontile {
+namespace sobel {
+class TapTrace;
+}  // namespace sobel
 
 // How D32F depth maps back to view distance, for the Vulkan [0, 1] projections of
 // context/camera_matrices (glTF 2.0 section 3.10 with depth in [0, 1]).
@@ -82,12 +86,14 @@ glm::vec2 view_ray_scale(const glm::dmat4& projection);
 //
 // Every tap is a nearest, clamp-to-edge read of level 0 (Texture2D::sample_lod with lod 0):
 // the texel is floor(tap uv * size) clamped to the texture, computed with exactly sample_lod's
-// float arithmetic. The texel trace (raster/texel_trace.h) receives, per active lane in lane
-// order, the texels of that per-tap sampling: the 9 depth taps in row-major order; the normal
-// centre tap; the other 8 normal taps only when depth found no edge; the colour at uv; the
-// border at the nearest tap only on an edge. So the simulated texture traffic is that of a GPU
-// shader sampling each tap, while the C++ code reads each distinct texel of a quad only once
-// (at 1 px spacing the 4 x 9 taps of a full quad are 16 distinct texels).
+// float arithmetic. The texel trace (raster/texel_trace.h) receives, per active fragment in
+// batch order (quad by quad, lane by lane), the texels of that per-tap sampling: the 9 depth
+// taps in row-major order; the normal centre tap; the other 8 normal taps only when depth found
+// no edge; the colour at uv; the border at the nearest tap only on an edge. So the simulated
+// texture traffic is that of a GPU shader sampling each tap, while the C++ code decodes each
+// texel of a batch's neighbourhood once (linear depth, decoded normal) and runs the tests on
+// SIMD lanes (sobel_edge_kernel.h); batches whose taps spread wider than the neighbourhood
+// grid (scattered uvs, very thick lines) read each tap instead.
 class SobelEdgeShader final : public FragmentShader {
  public:
   // Throws Error for missing colour/depth textures, a normal or border texture whose size
@@ -100,30 +106,27 @@ class SobelEdgeShader final : public FragmentShader {
   glm::vec4 shade_pixel(glm::vec2 uv) const;
 
  private:
-  // Level 0's size and place in the simulated address space: texel (x, y) is at
-  // origin + (y * width + x) * bytes_per_texel (Texture2D::texel_address).
-  struct TexelAddressing {
-    uint64_t origin = 0;
-    uint64_t bytes_per_texel = 0;
-    int width_px = 0, height_px = 0;
-    uint64_t address(int x, int y) const {
-      return origin + (static_cast<uint64_t>(y) * static_cast<uint64_t>(width_px) +
-                       static_cast<uint64_t>(x)) * bytes_per_texel;
-    }
-  };
-  static TexelAddressing addressing_of(const Texture2D* texture);
-
-  // Shades the lanes of lane_mask at uv[lane] into out[lane] (see the class comment).
-  void shade_lanes(const glm::vec2 uv[kQuadLanes], uint8_t lane_mask,
-                   glm::vec4 out[kQuadLanes]) const;
+  // Shades fragments [0, count) (count a multiple of 16, at most kBatchFragments) at
+  // (u[f], v[f]) whose bit is set in `active`, into colour[channel][f], recording the trace.
+  void shade_fragments(const float* u, const float* v, int count, uint64_t active,
+                       float (&colour)[4][kBatchFragments]) const;
+  // One fragment's taps read one by one (batches whose neighbourhood exceeds the grid).
+  glm::vec4 shade_one(glm::vec2 uv, sobel::TapTrace& trace) const;
+  // A fragment's colour from its scene texel and edge test; on an edge, the border texel of its
+  // nearest tap (recorded in the trace) or the default border colour.
+  glm::vec4 compose(const int tx[sobel::kTapsPerAxis], const int ty[sobel::kTapsPerAxis],
+                    int color_x, int color_y, bool edge, int nearest_tap,
+                    sobel::TapTrace& trace) const;
 
   // |cos| of the angle between the centre's normal and the view ray at uv, at least
   // min_grazing_cosine (also for a zero normal: an uncovered background pixel).
   float grazing_cosine(glm::vec3 view_normal, glm::vec2 uv) const;
 
   SobelEdgeParams p_;
-  glm::vec2 tap_step_uv_;
-  TexelAddressing color_addressing_, depth_addressing_, normal_addressing_, border_addressing_;
+  Texture2D::TexelView color_, depth_, normal_, border_;  // level 0 of each (empty if absent)
+  sobel::TapLayout layout_;
+  sobel::DepthDecode depth_decode_;
+  sobel::EdgeTest edge_test_;
 };
 
 }  // namespace ontile

@@ -1,0 +1,288 @@
+// The Sobel pass's SIMD stages (see sobel_edge_kernel.h), compiled once per SIMD target by
+// Highway's foreach_target and chosen at run time. Each vector operation is the scalar code's
+// operation in the same order (sobel_edge_shader.cpp: nearest_clamped_texel, linearize_depth,
+// grazing_cosine, sobel_magnitude, sobel_vector_magnitude), so every target gives its bits.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shaders_cpp/toon/sobel_edge_kernel.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <climits>
+#include <cstring>
+
+#include "shaders_cpp/toon/sobel_edge_kernel.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile::sobel {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;
+using DI = hn::RebindToSigned<DF>;
+using VF = hn::Vec<DF>;
+using VI = hn::Vec<DI>;
+
+// Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
+constexpr float kMaxExactTexelCoord = 16777216.0f;
+constexpr float kMinOneMinusDepth = 5.9604645e-8f;  // 2^-24, as linearize_depth
+// Bit i of a lane mask word for lane i (vectors have at most 16 float lanes here).
+alignas(64) constexpr int32_t kLaneBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
+                                              1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
+                                              1 << 12, 1 << 13, 1 << 14, 1 << 15};
+
+// Mask of the lanes whose bit is set in bits (bit i = lane i).
+HWY_INLINE hn::Mask<DI> lanes_of(DI di, uint64_t bits) {
+  const VI word = hn::Set(di, static_cast<int32_t>(bits & 0xFFFFu));
+  return hn::Ne(hn::And(word, hn::Load(di, kLaneBit)), hn::Zero(di));
+}
+
+// Mask bits of a vector as an integer (lane i -> bit i).
+HWY_INLINE uint64_t mask_bits(DF df, hn::Mask<DF> m) {
+  uint8_t bytes[8] = {};
+  hn::StoreMaskBits(df, m, bytes);
+  uint64_t bits = 0;
+  std::memcpy(&bits, bytes, sizeof(bits));
+  const size_t n = hn::Lanes(df);
+  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
+}
+
+// nearest_clamped_texel on lanes.
+HWY_INLINE VI nearest_clamped_texel(DF df, VF u, int size) {
+  const DI di;
+  const VF limit = hn::Set(df, kMaxExactTexelCoord);
+  u = hn::IfThenElseZero(hn::IsFinite(u), u);
+  u = hn::IfThenElse(hn::Lt(hn::Abs(u), limit), u, hn::CopySign(limit, u));
+  VF x = hn::Mul(u, hn::Set(df, static_cast<float>(size)));
+  x = hn::IfThenElse(hn::Lt(hn::Abs(x), limit), x, hn::CopySign(limit, x));
+  const VI i = hn::ConvertTo(di, hn::Floor(x));  // |x| <= 2^24: exact
+  return hn::Min(hn::Max(i, hn::Zero(di)), hn::Set(di, size - 1));
+}
+
+void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
+                     const TapLayout& layout, FragmentTaps& taps) {
+  const DF df;
+  const DI di;
+  const size_t n = hn::Lanes(df);
+  VI min_x = hn::Set(di, INT32_MAX), min_y = min_x;
+  VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
+  for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+    const VF uf = hn::LoadU(df, u + f), vf = hn::LoadU(df, v + f);
+    const hn::Mask<DI> on = lanes_of(di, active >> f);
+    VI x[kTapsPerAxis], y[kTapsPerAxis];
+    for (int a = 0; a < kTapsPerAxis; ++a) {
+      x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, layout.offset_u[a])),
+                                   layout.grid_width);
+      y[a] = nearest_clamped_texel(df, hn::Add(vf, hn::Set(df, layout.offset_v[a])),
+                                   layout.grid_height);
+      hn::Store(x[a], di, taps.x[a] + f);
+      hn::Store(y[a], di, taps.y[a] + f);
+      min_x = hn::Min(min_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MAX)));
+      min_y = hn::Min(min_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MAX)));
+      max_x = hn::Max(max_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MIN)));
+      max_y = hn::Max(max_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MIN)));
+    }
+    const VI color_x = nearest_clamped_texel(df, uf, layout.color_width);
+    const VI color_y = nearest_clamped_texel(df, vf, layout.color_height);
+    hn::Store(color_x, di, taps.color_x + f);
+    hn::Store(color_y, di, taps.color_y + f);
+  }
+  taps.x0 = hn::GetLane(hn::MinOfLanes(di, min_x));
+  taps.y0 = hn::GetLane(hn::MinOfLanes(di, min_y));
+  taps.x1 = hn::GetLane(hn::MaxOfLanes(di, max_x));
+  taps.y1 = hn::GetLane(hn::MaxOfLanes(di, max_y));
+}
+
+// linearize_depth on lanes, and the same for one value (row tails).
+HWY_INLINE VF linearize(DF df, VF d, const DepthDecode& l) {
+  const VF one = hn::Set(df, 1.0f);
+  d = hn::IfThenElseZero(hn::Gt(d, hn::Zero(df)), hn::IfThenElse(hn::Lt(d, one), d, one));
+  const VF n = hn::Set(df, l.near_plane);
+  if (l.mode == DepthDecode::Orthographic) return hn::Add(n, hn::Mul(d, hn::Set(df, l.far_minus_near)));
+  const VF one_minus_d = hn::Sub(one, d);
+  if (l.mode == DepthDecode::InfinitePerspective) {
+    const VF k = hn::Set(df, kMinOneMinusDepth);
+    return hn::Div(n, hn::IfThenElse(hn::Gt(one_minus_d, k), one_minus_d, k));
+  }
+  return hn::Div(hn::Set(df, l.far_times_near),
+                 hn::Add(n, hn::Mul(one_minus_d, hn::Set(df, l.far_minus_near))));
+}
+
+float linearize_one(float d, const DepthDecode& l) {
+  d = d > 0.0f ? (d < 1.0f ? d : 1.0f) : 0.0f;
+  const float n = l.near_plane;
+  if (l.mode == DepthDecode::Orthographic) return n + d * l.far_minus_near;
+  const float one_minus_d = 1.0f - d;
+  if (l.mode == DepthDecode::InfinitePerspective) {
+    return n / (one_minus_d > kMinOneMinusDepth ? one_minus_d : kMinOneMinusDepth);
+  }
+  return l.far_times_near / (n + one_minus_d * l.far_minus_near);
+}
+
+// decode_view_normal of one stored channel.
+HWY_INLINE VF decode_normal(DF df, VF stored, NormalEncoding encoding) {
+  if (encoding == NormalEncoding::Float) return stored;
+  return hn::Sub(hn::Mul(stored, hn::Set(df, 2.0f)), hn::Set(df, 1.0f));
+}
+
+void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelView* normal,
+                      NormalEncoding encoding, const DepthDecode& decode, NeighbourhoodGrid& grid) {
+  const DF df;
+  const size_t n = hn::Lanes(df);
+  const size_t width = static_cast<size_t>(grid.width);
+  for (int row = 0; row < grid.height; ++row) {
+    const int y = grid.y0 + row;
+    const size_t cell0 = static_cast<size_t>(row) * width;
+    size_t i = 0;
+    // Float32 texels on lanes (RGBA interleaved: the x channel is every fourth float); 8-bit
+    // texels, and the tail of a row, decode one at a time with the same operations.
+    if (depth.texels32f) {
+      const float* src = depth.texels32f + (static_cast<size_t>(y) * depth.width + grid.x0) * 4;
+      for (; i + n <= width; i += n) {
+        VF d, g, b, a;
+        hn::LoadInterleaved4(df, src + i * 4, d, g, b, a);
+        hn::StoreU(d, df, grid.depth + cell0 + i);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+      }
+    }
+    for (; i < width; ++i) {
+      const float d = depth.load(grid.x0 + static_cast<int>(i), y).x;
+      grid.depth[cell0 + i] = d;
+      grid.linear_z[cell0 + i] = linearize_one(d, decode);
+    }
+    if (!normal) continue;
+    i = 0;
+    if (normal->texels32f) {
+      const float* src = normal->texels32f + (static_cast<size_t>(y) * normal->width + grid.x0) * 4;
+      for (; i + n <= width; i += n) {
+        VF nx, ny, nz, nw;
+        hn::LoadInterleaved4(df, src + i * 4, nx, ny, nz, nw);
+        hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + i);
+        hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + i);
+        hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + i);
+      }
+    }
+    for (; i < width; ++i) {
+      const glm::vec3 nv = decode_view_normal(normal->load(grid.x0 + static_cast<int>(i), y), encoding);
+      for (int c = 0; c < 3; ++c) grid.normal[c][cell0 + i] = nv[c];
+    }
+  }
+}
+
+// The Sobel kernels on tap values t[k] (sobel_magnitude): ((r0 + r2) + 2 r1) of differences.
+HWY_INLINE VF sobel_x(DF df, const VF t[kTaps]) {
+  return hn::Add(hn::Add(hn::Sub(t[2], t[0]), hn::Sub(t[8], t[6])),
+                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[5], t[3])));
+}
+HWY_INLINE VF sobel_y(DF df, const VF t[kTaps]) {
+  return hn::Add(hn::Add(hn::Sub(t[6], t[0]), hn::Sub(t[8], t[2])),
+                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[7], t[1])));
+}
+// glm::dot of two 3-vectors: (x * x' + y * y') + z * z'.
+HWY_INLINE VF dot3(VF ax, VF ay, VF az, VF bx, VF by, VF bz) {
+  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
+}
+
+void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTaps& taps,
+                     const NeighbourhoodGrid& grid, const EdgeTest& test, FragmentEdges& edges) {
+  const DF df;
+  const DI di;
+  const size_t n = hn::Lanes(df);
+  const VI x0 = hn::Set(di, grid.x0), y0 = hn::Set(di, grid.y0);
+  const VI x1 = hn::Set(di, grid.x0 + grid.width - 1), y1 = hn::Set(di, grid.y0 + grid.height - 1);
+  const VI width = hn::Set(di, grid.width);
+  edges.depth_edge = edges.edge = 0;
+  for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+    // Grid cells of the taps; fragments outside the grid (inactive ones) read clamped cells.
+    VI column[kTapsPerAxis], row_start[kTapsPerAxis];
+    for (int a = 0; a < kTapsPerAxis; ++a) {
+      column[a] = hn::Sub(hn::Min(hn::Max(hn::Load(di, taps.x[a] + f), x0), x1), x0);
+      row_start[a] =
+          hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Load(di, taps.y[a] + f), y0), y1), y0), width);
+    }
+    VI cell[kTaps];
+    VF z[kTaps];
+    for (int k = 0; k < kTaps; ++k) {
+      cell[k] = hn::Add(row_start[k / kTapsPerAxis], column[k % kTapsPerAxis]);
+      z[k] = hn::GatherIndex(df, grid.linear_z, cell[k]);
+    }
+    // The first tap of the smallest stored depth, the centre keeping ties.
+    VF nearest_depth = hn::GatherIndex(df, grid.depth, cell[kCentreTap]);
+    VI nearest = hn::Set(di, kCentreTap);
+    for (int k = 0; k < kTaps; ++k) {
+      if (k == kCentreTap) continue;
+      const VF d = hn::GatherIndex(df, grid.depth, cell[k]);
+      const hn::Mask<DF> closer = hn::Lt(d, nearest_depth);
+      nearest_depth = hn::IfThenElse(closer, d, nearest_depth);
+      nearest = hn::IfThenElse(hn::RebindMask(di, closer), hn::Set(di, k), nearest);
+    }
+    hn::Store(nearest, di, edges.nearest_tap + f);
+    VF depth_limit = hn::Mul(hn::Set(df, test.depth_limit_scale), z[kCentreTap]);
+    if (test.has_normal) {
+      // grazing_cosine: the view ray through the pixel against the centre's normal.
+      const VF nx = hn::GatherIndex(df, grid.normal[0], cell[kCentreTap]);
+      const VF ny = hn::GatherIndex(df, grid.normal[1], cell[kCentreTap]);
+      const VF nz = hn::GatherIndex(df, grid.normal[2], cell[kCentreTap]);
+      const VF one = hn::Set(df, 1.0f), two = hn::Set(df, 2.0f), minus_one = hn::Set(df, -1.0f);
+      const VF rx = hn::Mul(hn::Set(df, test.view_ray_scale.x),
+                            hn::Sub(hn::Mul(two, hn::LoadU(df, u + f)), one));
+      const VF ry = hn::Mul(hn::Set(df, test.view_ray_scale.y),
+                            hn::Sub(one, hn::Mul(two, hn::LoadU(df, v + f))));
+      const VF normal_len = hn::Sqrt(dot3(nx, ny, nz, nx, ny, nz));
+      const VF ray_len = hn::Sqrt(dot3(rx, ry, minus_one, rx, ry, minus_one));
+      const VF cosine =
+          hn::Div(hn::Abs(dot3(nx, ny, nz, rx, ry, minus_one)), hn::Mul(normal_len, ray_len));
+      const VF min_cosine = hn::Set(df, test.min_grazing_cosine);
+      VF grazing = hn::IfThenElse(hn::Gt(cosine, min_cosine), cosine, min_cosine);
+      grazing = hn::IfThenElse(hn::Gt(normal_len, hn::Zero(df)), grazing, min_cosine);
+      depth_limit = hn::Div(depth_limit, grazing);
+    }
+    const VF gx = sobel_x(df, z), gy = sobel_y(df, z);
+    const hn::Mask<DF> depth_edge =
+        hn::Gt(hn::Sqrt(hn::Add(hn::Mul(gx, gx), hn::Mul(gy, gy))), depth_limit);
+    hn::Mask<DF> edge = depth_edge;
+    if (test.has_normal && !hn::AllTrue(df, depth_edge)) {
+      // sobel_vector_magnitude where depth found no edge.
+      VF gxs[3], gys[3];
+      for (int c = 0; c < 3; ++c) {
+        VF t[kTaps];
+        for (int k = 0; k < kTaps; ++k) t[k] = hn::GatherIndex(df, grid.normal[c], cell[k]);
+        gxs[c] = sobel_x(df, t);
+        gys[c] = sobel_y(df, t);
+      }
+      const VF magnitude = hn::Sqrt(hn::Add(dot3(gxs[0], gxs[1], gxs[2], gxs[0], gxs[1], gxs[2]),
+                                            dot3(gys[0], gys[1], gys[2], gys[0], gys[1], gys[2])));
+      edge = hn::Or(edge, hn::Gt(magnitude, hn::Set(df, test.normal_threshold)));
+    }
+    edges.depth_edge |= mask_bits(df, depth_edge) << f;
+    edges.edge |= mask_bits(df, edge) << f;
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile::sobel
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile::sobel {
+
+HWY_EXPORT(TapTexelsKernel);
+HWY_EXPORT(DecodeGridKernel);
+HWY_EXPORT(FindEdgesKernel);
+
+void tap_texels(const float* u, const float* v, int count, uint64_t active,
+                const TapLayout& layout, FragmentTaps& taps) {
+  HWY_DYNAMIC_DISPATCH(TapTexelsKernel)(u, v, count, active, layout, taps);
+}
+
+void decode_grid(const Texture2D::TexelView& depth, const Texture2D::TexelView* normal,
+                 NormalEncoding encoding, const DepthDecode& decode, NeighbourhoodGrid& grid) {
+  HWY_DYNAMIC_DISPATCH(DecodeGridKernel)(depth, normal, encoding, decode, grid);
+}
+
+void find_edges(const float* u, const float* v, int count, const FragmentTaps& taps,
+                const NeighbourhoodGrid& grid, const EdgeTest& test, FragmentEdges& edges) {
+  HWY_DYNAMIC_DISPATCH(FindEdgesKernel)(u, v, count, taps, grid, test, edges);
+}
+
+}  // namespace ontile::sobel
+#endif  // HWY_ONCE
