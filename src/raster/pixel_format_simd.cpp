@@ -7,6 +7,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <bit>
 
 #include "raster/pixel_format.h"
@@ -25,6 +26,83 @@ hn::Vec<DD> unorm_code(DD dd, hn::Vec<DD> v, double max_code) {
   const auto code = hn::Floor(hn::Add(hn::Mul(v, hn::Set(dd, max_code)), hn::Set(dd, 0.5)));
   const auto clamped = hn::IfThenElse(hn::Ge(v, hn::Set(dd, 1.0)), hn::Set(dd, max_code), code);
   return hn::IfThenElseZero(hn::Gt(v, hn::Zero(dd)), clamped);
+}
+
+// unorm_code with a per-lane maximum code (channels of different widths).
+template <class DD>
+hn::Vec<DD> unorm_code(DD dd, hn::Vec<DD> v, hn::Vec<DD> max_code) {
+  const auto code = hn::Floor(hn::Add(hn::Mul(v, max_code), hn::Set(dd, 0.5)));
+  const auto clamped = hn::IfThenElse(hn::Ge(v, hn::Set(dd, 1.0)), max_code, code);
+  return hn::IfThenElseZero(hn::Gt(v, hn::Zero(dd)), clamped);
+}
+
+// RGB10A2's maximum codes, R G B A repeated: a vector of up to 16 lanes starting at any
+// channel (i % 4) loads from here.
+alignas(64) constexpr double kRgb10a2MaxCodes[20] = {1023, 1023, 1023, 3, 1023, 1023, 1023, 3,
+                                                     1023, 1023, 1023, 3, 1023, 1023, 1023, 3,
+                                                     1023, 1023, 1023, 3};
+constexpr int kPackedChunkPixels = 64;
+
+void EncodeRgb10a2Kernel(const float* rgba, int pixels, uint8_t* dst) {
+  const hn::ScalableTag<double> dd;
+  const hn::Rebind<float, decltype(dd)> df;
+  const hn::Rebind<int32_t, decltype(dd)> di;
+  const size_t n = hn::Lanes(dd);
+  alignas(64) int32_t codes[4 * kPackedChunkPixels];
+  for (int first = 0; first < pixels; first += kPackedChunkPixels) {
+    const int chunk = std::min(kPackedChunkPixels, pixels - first);
+    const float* values = rgba + 4 * static_cast<size_t>(first);
+    const size_t count = 4 * static_cast<size_t>(chunk);
+    size_t i = 0;
+    for (; i + n <= count && n <= 16; i += n) {
+      const auto max_code = hn::LoadU(dd, kRgb10a2MaxCodes + i % 4);
+      const auto code = unorm_code(dd, hn::PromoteTo(dd, hn::LoadU(df, values + i)), max_code);
+      hn::StoreU(hn::DemoteTo(di, code), di, codes + i);
+    }
+    for (; i < count; ++i) {
+      codes[i] = static_cast<int32_t>(float_to_unorm(values[i], i % 4 == 3 ? 2 : 10));
+    }
+    uint8_t* out = dst + 4 * static_cast<size_t>(first);
+    for (int p = 0; p < chunk; ++p) {
+      const uint32_t word = static_cast<uint32_t>(codes[4 * p]) |
+                            (static_cast<uint32_t>(codes[4 * p + 1]) << 10) |
+                            (static_cast<uint32_t>(codes[4 * p + 2]) << 20) |
+                            (static_cast<uint32_t>(codes[4 * p + 3]) << 30);
+      for (int b = 0; b < 4; ++b) out[4 * p + b] = static_cast<uint8_t>(word >> (8 * b));
+    }
+  }
+}
+
+void DecodeRgb10a2Kernel(const uint8_t* src, int pixels, float* rgba) {
+  const hn::ScalableTag<double> dd;
+  const hn::Rebind<float, decltype(dd)> df;
+  const hn::Rebind<int32_t, decltype(dd)> di;
+  const size_t n = hn::Lanes(dd);
+  alignas(64) int32_t codes[4 * kPackedChunkPixels];
+  for (int first = 0; first < pixels; first += kPackedChunkPixels) {
+    const int chunk = std::min(kPackedChunkPixels, pixels - first);
+    const uint8_t* in = src + 4 * static_cast<size_t>(first);
+    for (int p = 0; p < chunk; ++p) {
+      const uint32_t word = in[4 * p] | (uint32_t{in[4 * p + 1]} << 8) |
+                            (uint32_t{in[4 * p + 2]} << 16) | (uint32_t{in[4 * p + 3]} << 24);
+      codes[4 * p] = static_cast<int32_t>(word & 0x3FFu);
+      codes[4 * p + 1] = static_cast<int32_t>((word >> 10) & 0x3FFu);
+      codes[4 * p + 2] = static_cast<int32_t>((word >> 20) & 0x3FFu);
+      codes[4 * p + 3] = static_cast<int32_t>(word >> 30);
+    }
+    float* values = rgba + 4 * static_cast<size_t>(first);
+    const size_t count = 4 * static_cast<size_t>(chunk);
+    size_t i = 0;
+    // unorm_to_float: the code over the maximum in double (exact IEEE division), then float.
+    for (; i + n <= count && n <= 16; i += n) {
+      const auto code = hn::PromoteTo(dd, hn::LoadU(di, codes + i));
+      const auto value = hn::Div(code, hn::LoadU(dd, kRgb10a2MaxCodes + i % 4));
+      hn::StoreU(hn::DemoteTo(df, value), df, values + i);
+    }
+    for (; i < count; ++i) {
+      values[i] = unorm_to_float(static_cast<uint32_t>(codes[i]), i % 4 == 3 ? 2 : 10);
+    }
+  }
 }
 
 void QuantizeUnormKernel(float* values, int count, int bits) {
@@ -128,6 +206,8 @@ HWY_EXPORT(EncodeUnorm8Kernel);
 HWY_EXPORT(QuantizeSrgb8Kernel);
 HWY_EXPORT(EncodeSrgb8Kernel);
 HWY_EXPORT(DecodeTable8Kernel);
+HWY_EXPORT(EncodeRgb10a2Kernel);
+HWY_EXPORT(DecodeRgb10a2Kernel);
 
 void quantize_unorm_simd(float* values, int count, int bits) {
   HWY_DYNAMIC_DISPATCH(QuantizeUnormKernel)(values, count, bits);
@@ -143,6 +223,12 @@ void encode_srgb8_simd(const float* values, int count, uint8_t* dst) {
 }
 void decode_table8_simd(const uint8_t* src, int count, const float* table, float* dst) {
   HWY_DYNAMIC_DISPATCH(DecodeTable8Kernel)(src, count, table, dst);
+}
+void encode_rgb10a2_simd(const float* rgba, int pixels, uint8_t* dst) {
+  HWY_DYNAMIC_DISPATCH(EncodeRgb10a2Kernel)(rgba, pixels, dst);
+}
+void decode_rgb10a2_simd(const uint8_t* src, int pixels, float* rgba) {
+  HWY_DYNAMIC_DISPATCH(DecodeRgb10a2Kernel)(src, pixels, rgba);
 }
 
 }  // namespace ontile

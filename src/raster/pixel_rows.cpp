@@ -55,6 +55,9 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
     case PixelFormat::RGBA32_FLOAT:
       std::memcpy(dst, values, sizeof(glm::vec4) * static_cast<size_t>(count));
       return;
+    case PixelFormat::RGB10A2_UNORM:
+      encode_rgb10a2_simd(values, count, dst);
+      return;
     case PixelFormat::R32_FLOAT:
     case PixelFormat::D32_FLOAT:
       for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &src[i].x, 4);
@@ -80,6 +83,17 @@ void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4*
     }
     case PixelFormat::RGBA32_FLOAT:
       std::memcpy(values, src, sizeof(glm::vec4) * static_cast<size_t>(count));
+      return;
+    case PixelFormat::RGB10A2_UNORM:
+      decode_rgb10a2_simd(src, count, values);
+      return;
+    case PixelFormat::R32_FLOAT:
+    case PixelFormat::D32_FLOAT:
+      for (int i = 0; i < count; ++i) {
+        float value;
+        std::memcpy(&value, src + 4 * i, 4);
+        dst[i] = {value, 0.0f, 0.0f, 1.0f};
+      }
       return;
     default: {
       const int bytes = bytes_per_pixel(format);

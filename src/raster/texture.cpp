@@ -214,7 +214,7 @@ class Linear8Sampler {
 // take the scalar path below.
 void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
                          const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
-                         glm::vec4 out[4]) {
+                         int fetches, glm::vec4 out[4]) {
   QuadSample8 simd;
   simd.uv = uv;
   simd.wrap_u = sampler.wrap_u;
@@ -223,6 +223,7 @@ void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const Texe
   simd.alpha_decode = decoder.alpha;
   simd.trace = decoder.trace ? texel_trace_detail::sink : nullptr;
   simd.last_granule = &texel_trace_detail::last_granule;
+  simd.trace_repeats = fetches;
   const float max_level = static_cast<float>(levels.size() - 1);
   const bool base_only = !(lambda > 0.0f) || sampler.mipmap_mode == MipmapMode::None;
   if (!base_only) lambda = std::min(lambda, max_level);
@@ -245,26 +246,30 @@ void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const Texe
   }
   if (sample_quad8_simd(simd, out)) return;
 
+  // The general path (rare: huge coordinates) samples once per fetch, so each is traced.
   Linear8Sampler s(decoder, sampler);
-  if (base_only || sampler.mipmap_mode == MipmapMode::Nearest) {
-    for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[single_level], uv[lane]);
-    return;
-  }
-  const int d1 = static_cast<int>(d1_float);
-  for (int lane = 0; lane < 4; ++lane) {
-    const glm::vec4 s1 = s.sample(levels[d1], uv[lane]);
-    if (blend == 0.0f) {
-      out[lane] = s1;
+  for (int fetch = 0; fetch < fetches; ++fetch) {
+    if (base_only || sampler.mipmap_mode == MipmapMode::Nearest) {
+      for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[single_level], uv[lane]);
       continue;
     }
-    const glm::vec4 s2 = s.sample(levels[d1 + 1], uv[lane]);
-    out[lane] = s1 * (1.0f - blend) + s2 * blend;
+    const int d1 = static_cast<int>(d1_float);
+    for (int lane = 0; lane < 4; ++lane) {
+      const glm::vec4 s1 = s.sample(levels[d1], uv[lane]);
+      if (blend == 0.0f) {
+        out[lane] = s1;
+        continue;
+      }
+      const glm::vec4 s2 = s.sample(levels[d1 + 1], uv[lane]);
+      out[lane] = s1 * (1.0f - blend) + s2 * blend;
+    }
   }
 }
 
 template <bool kFloat>
 void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
-                       const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4]) {
+                       const SamplerDesc& sampler, const glm::vec2 uv[4], int fetches,
+                       glm::vec4 out[4]) {
   glm::vec2 finite_uv[4];
   for (int lane = 0; lane < 4; ++lane) {
     finite_uv[lane] = {finite_or_zero(uv[lane].x), finite_or_zero(uv[lane].y)};
@@ -272,12 +277,14 @@ void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelD
   const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
   if constexpr (!kFloat) {
     if (sampler.mag_filter == FilterMode::Linear && sampler.min_filter == FilterMode::Linear) {
-      sample_quad_linear8(levels, decoder, sampler, finite_uv, lambda, out);
+      sample_quad_linear8(levels, decoder, sampler, finite_uv, lambda, fetches, out);
       return;
     }
   }
-  for (int lane = 0; lane < 4; ++lane) {
-    out[lane] = sample_with_lambda<kFloat>(levels, decoder, sampler, finite_uv[lane], lambda);
+  for (int fetch = 0; fetch < fetches; ++fetch) {
+    for (int lane = 0; lane < 4; ++lane) {
+      out[lane] = sample_with_lambda<kFloat>(levels, decoder, sampler, finite_uv[lane], lambda);
+    }
   }
 }
 
@@ -409,12 +416,13 @@ glm::vec4 Texture2D::sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float 
 }
 
 void Texture2D::sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4],
-                            glm::vec4 out[4]) const {
+                            glm::vec4 out[4], int fetches) const {
   const TexelDecoder decoder = decoder_for(encoding_);
+  fetches = std::max(fetches, 1);
   if (encoding_ == TexelEncoding::Float32) {
-    sample_quad_lanes<true>(levels_, decoder, sampler, uv, out);
+    sample_quad_lanes<true>(levels_, decoder, sampler, uv, fetches, out);
   } else {
-    sample_quad_lanes<false>(levels_, decoder, sampler, uv, out);
+    sample_quad_lanes<false>(levels_, decoder, sampler, uv, fetches, out);
   }
 }
 

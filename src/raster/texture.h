@@ -23,6 +23,7 @@ struct SamplerDesc {
   WrapMode wrap_u = WrapMode::Repeat;
   WrapMode wrap_v = WrapMode::Repeat;
   float lod_bias = 0.0f;
+  friend bool operator==(const SamplerDesc&, const SamplerDesc&) = default;
 };
 
 // How texels are stored; sampling always returns linear float RGBA.
@@ -104,7 +105,12 @@ class Texture2D {
   glm::vec4 sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const;
   // Samples the 4 lanes of a 2x2 quad (lane order: (0,0), (1,0), (0,1), (1,1)). The LOD comes
   // from the quad's uv derivatives as in the OpenGL 4.6 spec, section 8.14.1.
-  void sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4]) const;
+  // `fetches` > 1 stands for a shader that issues that many identical sample instructions (same
+  // texture, sampler and uv, e.g. two material slots bound to one image): a GPU's texture unit
+  // still reads the texels once per instruction, so the texel trace records every fetch, but the
+  // filtered value, the same bits each time, is computed once.
+  void sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4],
+                   int fetches = 1) const;
 
   struct Level {
     int width = 0, height = 0;

@@ -124,19 +124,23 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
     }
   }
   uint64_t unique[2 * 4 * kLanes];
-  int count = 0;
   uint64_t last = *in.last_granule;
-  for (int lane = 0; lane < kLanes; ++lane) {
-    for (int l = 0; l < in.level_count; ++l) {
-      for (int t = 0; t < 4; ++t) {
-        const uint64_t g = granule[l][t][lane];
-        unique[count] = g;
-        count += g != last;
-        last = g;
+  // A repeated fetch reads the same texels again; only its first granule can merge differently
+  // (with the previous fetch's last), so each repeat is collapsed against the running last.
+  for (int repeat = 0; repeat < in.trace_repeats; ++repeat) {
+    int count = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      for (int l = 0; l < in.level_count; ++l) {
+        for (int t = 0; t < 4; ++t) {
+          const uint64_t g = granule[l][t][lane];
+          unique[count] = g;
+          count += g != last;
+          last = g;
+        }
       }
     }
+    in.trace->insert(in.trace->end(), unique, unique + count);
   }
-  in.trace->insert(in.trace->end(), unique, unique + count);
   *in.last_granule = last;
 }
 

@@ -21,6 +21,7 @@ struct QuadSample8 {
   const float* alpha_decode = nullptr;
   std::vector<uint64_t>* trace = nullptr;  // texel trace sink, or null
   uint64_t* last_granule = nullptr;        // the trace's last granule (updated)
+  int trace_repeats = 1;                   // identical fetches the trace records (>= 1)
 };
 
 // Returns false, touching nothing, when a lane needs the general path (coordinates beyond 2^24

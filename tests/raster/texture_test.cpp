@@ -1,13 +1,16 @@
 // Tests for Texture2D: mip chain sizes and box filtering (linear space, odd sizes), exact
-// nearest/bilinear sampling, wrap modes, LOD selection from quad derivatives, non-finite uv.
+// nearest/bilinear sampling, wrap modes, LOD selection from quad derivatives, non-finite uv,
+// and repeated fetches traced as separate sample instructions.
 #include "raster/texture.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 
 #include "raster/pixel_format.h"
+#include "raster/texel_trace.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -281,6 +284,51 @@ TEST(Texture2D, RejectsBadSizes) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("albedo.png"), std::string::npos);
   }
+}
+
+// sample_quad(..., fetches = 2) stands for two identical sample instructions: the same value and
+// the same texel trace as two calls, on the SIMD path (8-bit, linear) and the general paths
+// (Float32, nearest), whatever the granule the trace ended on before.
+TEST(Texture2D, RepeatedFetchesTraceLikeSeparateSamples) {
+  const auto noise = noise_texture(37, 29, true);
+  const auto coords = coordinate_texture(16, 16);
+  const std::pair<const Texture2D*, SamplerDesc> cases[] = {
+      {noise.get(), sampler_of(FilterMode::Linear, MipmapMode::Linear)},
+      {noise.get(), sampler_of(FilterMode::Linear, MipmapMode::None, WrapMode::ClampToEdge)},
+      {noise.get(), sampler_of(FilterMode::Nearest, MipmapMode::Nearest)},
+      {coords.get(), sampler_of(FilterMode::Linear, MipmapMode::Linear)},
+  };
+  int quads_with_merged_repeats = 0;
+  for (const auto& [texture, sampler] : cases) {
+    for (int i = 0; i < 40; ++i) {
+      glm::vec2 uv[4];
+      make_quad(*texture, {0.013f * i, 0.7f - 0.021f * i}, 0.25f + 0.2f * i, 0.5f + 0.1f * i, uv);
+      std::vector<uint64_t> twice, repeated;
+      glm::vec4 a[4], b[4], c[4];
+      {
+        TexelTraceScope scope(&twice);
+        record_texel_address(uint64_t{i} << 20);  // a previous granule unrelated to the texture
+        texture->sample_quad(sampler, uv, a);
+        texture->sample_quad(sampler, uv, b);
+      }
+      {
+        TexelTraceScope scope(&repeated);
+        record_texel_address(uint64_t{i} << 20);
+        texture->sample_quad(sampler, uv, c, 2);
+      }
+      EXPECT_EQ(repeated, twice) << texture->name() << " quad " << i;
+      for (int lane = 0; lane < 4; ++lane) {
+        for (int ch = 0; ch < 4; ++ch) {
+          EXPECT_EQ(std::bit_cast<uint32_t>(c[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
+          EXPECT_EQ(std::bit_cast<uint32_t>(a[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
+        }
+      }
+      // The previous granule, then a footprint inside one granule that the repeat merges into:
+      // the collapse across fetches is exercised.
+      quads_with_merged_repeats += twice.size() == 2;
+    }
+  }
+  EXPECT_GT(quads_with_merged_repeats, 0);
 }
 
 }  // namespace

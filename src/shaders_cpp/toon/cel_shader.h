@@ -48,6 +48,7 @@ class CelShader final : public FragmentShader {
       throw Error("CelShader: steps must be at least 1 (got " + std::to_string(p_.steps) + ")");
     }
     if (!(p_.step_size > 0.0f)) p_.step_size = 1.0f / static_cast<float>(p_.steps);
+    one_map_ = p_.lit_map && p_.lit_map == p_.shadow_map && p_.lit_sampler == p_.shadow_sampler;
   }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
@@ -74,6 +75,14 @@ class CelShader final : public FragmentShader {
         glm::vec2 uv[kQuadLanes];
         batch_quad_uv(batch, ToonVertexShader::kUv, q, uv);
         glm::vec4 texel[kQuadLanes];
+        if (one_map_) {
+          // Both colours from one image: the two sample instructions read the same texels
+          // (traced twice) and return the same value, filtered once.
+          p_.lit_map->sample_quad(p_.lit_sampler, uv, texel, 2);
+          batch_multiply_quad(lit, 4, q, texel);
+          batch_multiply_quad(shadow, 4, q, texel);
+          continue;
+        }
         if (p_.lit_map) {
           p_.lit_map->sample_quad(p_.lit_sampler, uv, texel);
           batch_multiply_quad(lit, 4, q, texel);
@@ -99,6 +108,7 @@ class CelShader final : public FragmentShader {
   }
 
   CelParams p_;
+  bool one_map_ = false;  // lit and shadow maps are one texture with one sampler
 };
 
 }  // namespace ontile

@@ -1,8 +1,11 @@
 // The texel trace of the Sobel edge pass (sobel_edge_shader.h): per fragment, the texels that
 // sampling each tap separately reads, in that order, with the address constants held in
-// locals so a tap costs an add and a compare.
+// locals and the granules gathered in a batch-sized buffer, so a tap costs an add, a store
+// and a compare, and the thread's trace is appended to once per batch.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
@@ -12,19 +15,37 @@ namespace ontile::sobel {
 
 class TapTrace {
  public:
-  // depth is required; normal and border may be null (not sampled).
+  // Reads per fragment: 9 depth taps, 9 normal taps, the colour and the border texel.
+  static constexpr int kMaxReadsPerFragment = 2 * kTaps + 2;
+
+  // depth is required; normal and border may be null (not sampled). Records into the thread's
+  // texel trace (texel_trace.h), if one is active, when the TapTrace goes out of scope; at most
+  // kBatchFragments fragments (and their border reads) may be recorded.
   TapTrace(const Texture2D::TexelView& color, const Texture2D::TexelView& depth,
            const Texture2D::TexelView* normal, const Texture2D::TexelView* border)
       : color_(color), depth_(depth), normal_(normal ? Plane(*normal) : Plane()),
-        border_(border ? Plane(*border) : Plane()), has_normal_(normal != nullptr) {}
+        border_(border ? Plane(*border) : Plane()), has_normal_(normal != nullptr),
+        sink_(texel_trace_detail::sink), last_granule_(texel_trace_detail::last_granule) {}
+  ~TapTrace() {
+    if (!sink_) return;
+    sink_->insert(sink_->end(), granules_.data(), granules_.data() + count_);
+    texel_trace_detail::last_granule = last_granule_;
+  }
+  TapTrace(const TapTrace&) = delete;
+  TapTrace& operator=(const TapTrace&) = delete;
 
   // The reads of one fragment up to its colour sample: the 9 depth taps row by row, the normal
   // centre, the other 8 normal taps when all_normals, the colour texel.
   void fragment(const int tx[kTapsPerAxis], const int ty[kTapsPerAxis], int color_x,
                 int color_y, bool all_normals) {
-    // The last granule in a local, so it stays in a register across the texel trace's stores.
+    if (!sink_) return;
+    // The last granule and the count in locals, so they stay in registers across the stores.
     uint64_t last = last_granule_;
-    const auto record = [&last](uint64_t byte_address) { record_new(byte_address, last); };
+    int count = count_;
+    uint64_t* const granules = granules_.data();
+    const auto record = [&last, &count, granules](uint64_t byte_address) {
+      append_new(byte_address, granules, count, last);
+    };
     uint64_t column[kTapsPerAxis], row[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
       column[a] = depth_.column_offset(tx[a]);
@@ -49,9 +70,12 @@ class TapTrace {
     }
     record(color_.address(color_x, color_y));
     last_granule_ = last;
+    count_ = count;
   }
   // The border read of a fragment on an edge, at its nearest tap's texel.
-  void border(int x, int y) { record_new(border_.address(x, y), last_granule_); }
+  void border(int x, int y) {
+    if (sink_) append_new(border_.address(x, y), granules_.data(), count_, last_granule_);
+  }
 
  private:
   // Texture2D::texel_address of level 0 split into row and column terms: origin +
@@ -68,18 +92,22 @@ class TapTrace {
     uint64_t address(int x, int y) const { return row_address(y) + column_offset(x); }
   };
 
-  // Consecutive reads of one 64-byte granule are left out before record_texel_address, which
-  // drops them anyway (texel_trace.h): the same trace, fewer calls.
-  static void record_new(uint64_t byte_address, uint64_t& last_granule) {
+  // Consecutive reads of one 64-byte granule count once, as record_texel_address merges them
+  // (texel_trace.h); branch-free: the granule is always stored, the count moves on if new.
+  static void append_new(uint64_t byte_address, uint64_t* granules, int& count,
+                         uint64_t& last_granule) {
     const uint64_t granule = byte_address >> 6;
-    if (granule == last_granule) return;
+    granules[count] = granule;
+    count += granule != last_granule;
     last_granule = granule;
-    record_texel_address(byte_address);
   }
 
   Plane color_, depth_, normal_, border_;
   bool has_normal_;
-  uint64_t last_granule_ = ~uint64_t{0};  // no granule: granules are below 2^58
+  std::vector<uint64_t>* sink_;  // the thread's trace when the TapTrace was made, or null
+  uint64_t last_granule_;        // the trace's last granule, carried across the batch
+  int count_ = 0;
+  std::array<uint64_t, kBatchFragments * kMaxReadsPerFragment> granules_;
 };
 
 }  // namespace ontile::sobel
