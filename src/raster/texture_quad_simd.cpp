@@ -123,23 +123,30 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
       }
     }
   }
-  uint64_t unique[2 * 4 * kLanes];
-  uint64_t last = *in.last_granule;
-  // A repeated fetch reads the same texels again; only its first granule can merge differently
-  // (with the previous fetch's last), so each repeat is collapsed against the running last.
-  for (int repeat = 0; repeat < in.trace_repeats; ++repeat) {
-    int count = 0;
-    for (int lane = 0; lane < kLanes; ++lane) {
-      for (int l = 0; l < in.level_count; ++l) {
-        for (int t = 0; t < 4; ++t) {
-          const uint64_t g = granule[l][t][lane];
-          unique[count] = g;
-          count += g != last;
-          last = g;
-        }
+  // The footprint's first granule, then the rest with repeats of the previous one merged: only
+  // the first can merge with what the trace held before, so a repeated fetch (trace_repeats)
+  // appends the same tail again.
+  uint64_t tail[2 * 4 * kLanes];
+  const Texture2D::Level& level0 = *in.levels[0];
+  const uint64_t first =
+      (level0.address + static_cast<uint64_t>(taps[0][0][0]) * level0.memory_bytes_per_texel) >> 6;
+  uint64_t last = first;
+  int tail_count = 0;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    for (int l = 0; l < in.level_count; ++l) {
+      for (int t = 0; t < 4; ++t) {
+        const uint64_t g = granule[l][t][lane];
+        tail[tail_count] = g;
+        tail_count += g != last;
+        last = g;
       }
     }
-    in.trace->insert(in.trace->end(), unique, unique + count);
+  }
+  uint64_t previous = *in.last_granule;
+  for (int repeat = 0; repeat < in.trace_repeats; ++repeat) {
+    if (first != previous) in.trace->push_back(first);
+    in.trace->insert(in.trace->end(), tail, tail + tail_count);
+    previous = last;
   }
   *in.last_granule = last;
 }
