@@ -115,7 +115,7 @@ TEST_F(CliErrors, PipelinesGoldenAndTheVerbItself) {
           {"golden --dir " + out("none"), "--dir"},
           {"golden --bogus", "--bogus"},
           {"frobnicate", "frobnicate"},
-          {"", "subcommand"},
+          {"", "expected one of render"},
           {"--bogus", "--bogus"},
       },
       scratch_, out_);
@@ -146,7 +146,7 @@ TEST_F(CliErrors, StudyAndSweep) {
   const std::string outputs = " --csv " + out("s.csv") + " --plot " + out("s.png");
   expect_usage_errors(
       {
-          {"study", "subcommand"},
+          {"study", "expected one of deferred"},
           {"study shallow --scene " + kDemo, "shallow"},
           {study + " --tile 12", "--tile"},
           {study + " --frames 0", "--frames"},
