@@ -5,6 +5,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
-mkdir -p out
+mkdir -p out  # the CLI never creates folders for its outputs
 build/ontile gen-scene atrium --out out/atrium.glb
 build/ontile study deferred --scene out/atrium.glb --markdown out/deferred_study.md "$@"

@@ -1,5 +1,7 @@
 // `ontile golden [--update]`: compares every golden case with golden/, or rewrites golden/.
+// Exit 1 when an image differs or is missing, 2 when a file cannot be read or written.
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
 #include "golden/golden_images.h"
@@ -21,6 +23,10 @@ void add_golden_command(CLI::App& app) {
   cmd->add_option("--failures", o->failure_dir, "Where mismatches write actual and diff images");
   cmd->add_option("--assets", o->shared_assets, "Shared assets folder");
   cmd->callback([o] {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(o->golden_dir, ec)) {
+      throw UsageError("--dir " + o->golden_dir + ": folder does not exist");
+    }
     int failures = 0;
     for (const GoldenCase& c : golden_cases(ONTILE_SOURCE_DIR, o->shared_assets)) {
       const GoldenResult r = run_golden_case(c, o->golden_dir, o->failure_dir, o->update);
@@ -28,7 +34,10 @@ void add_golden_command(CLI::App& app) {
       std::printf("%-28s %-9s %s\n", c.name.c_str(), status[static_cast<int>(r.status)], r.message.c_str());
       failures += r.status == GoldenResult::Status::Mismatch || r.status == GoldenResult::Status::Missing;
     }
-    if (failures) throw Error(std::to_string(failures) + " golden image(s) differ");
+    if (failures) {
+      throw MismatchError(std::to_string(failures) + " golden image(s) differ from " + o->golden_dir +
+                          " (actual and diff images in " + o->failure_dir + ")");
+    }
   });
 }
 

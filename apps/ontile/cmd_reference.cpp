@@ -20,17 +20,21 @@ struct ReferenceOptions {
 void run_reference(const ReferenceOptions& o) {
   int width_px = 0, height_px = 0;
   parse_size(o.size, width_px, height_px);
-  check_samples_per_pixel(o.spp);
+  try {
+    check_samples_per_pixel(o.spp);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
   const std::filesystem::path out(o.out);
   if (out.extension() != ".exr") {
-    throw Error(o.out + ": unsupported output extension '" + out.extension().string() +
-                "' (the reference writes .exr: R, G, B, A, Z, primid, N.x, N.y, N.z)");
+    throw UsageError("--out " + o.out + ": unsupported output extension '" + out.extension().string() +
+                     "' (the reference writes .exr: R, G, B, A, Z, primid, N.x, N.y, N.z)");
   }
+  check_output_option("--out", o.out, false);
   const Scene scene = load_gltf(o.scene);
   const Camera camera = select_camera(scene, o.camera);
   const LambertReferenceScene ref = make_lambert_reference_scene(scene, camera, width_px, height_px);
   const ReferenceImage image = render_reference(ref, width_px, height_px, o.spp);
-  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   write_reference_exr(out, image);
   std::printf("%s: %dx%d reference, %d samples per pixel, %llu triangles; wrote %s\n", o.scene.c_str(),
               width_px, height_px, o.spp, static_cast<unsigned long long>(ref.geometry->triangle_count()),
@@ -46,7 +50,7 @@ void add_reference_command(CLI::App& app) {
   cmd->add_option("--out", o->out, "Output EXR (R, G, B, A, Z, primid, N.x, N.y, N.z)")->required();
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 1280x720)");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 1280x720)");
   cmd->add_option("--spp", o->spp, "Samples per pixel: a perfect square 1, 4, 9, ... 256 (stratified grid; default 1)");
   cmd->callback([o] { run_reference(*o); });
 }

@@ -1,10 +1,10 @@
 // `ontile render`: renders a scene with a pipeline, writes the image (and optionally the JSON
-// traffic report) and prints a summary with the traffic table; --frames N times N frames.
+// traffic report, "-" for standard output) together, and prints a summary with the traffic
+// table; --frames N times N frames.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "commands.h"
@@ -13,7 +13,6 @@
 #include "pipelines/aov/aov_pass.h"
 #include "pipelines/render_frame.h"
 #include "scene/gltf_loader.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
 
@@ -42,26 +41,22 @@ auto render_timed(int frames, std::vector<double>& ms, Render&& render) {
 }
 
 // The same three lines as bench/llvmpipe's runner prints, so scripts read both alike.
-void print_frame_times(std::vector<double> ms) {
+void print_frame_times(std::FILE* stream, std::vector<double> ms) {
   if (ms.empty()) return;
   std::sort(ms.begin(), ms.end());
   const size_t n = ms.size();
   const double median = n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
-  std::printf("frames: %zu after 1 warm-up\nmedian_ms: %.3f\nmin_ms: %.3f\n", n, median, ms.front());
+  std::fprintf(stream, "frames: %zu after 1 warm-up\nmedian_ms: %.3f\nmin_ms: %.3f\n", n, median, ms.front());
 }
 
-void ensure_parent_folder(const std::filesystem::path& path) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-}
-
-void write_color(const std::filesystem::path& path, const Surface& color) {
+void write_color(const std::filesystem::path& path, const Surface& color, StagedOutputs& staged) {
   const std::string ext = path.extension().string();
   if (ext == ".png") {
     if (color.format() != PixelFormat::RGBA8_SRGB && color.format() != PixelFormat::RGBA8_UNORM) {
       throw Error(path.string() + ": PNG needs an 8-bit target, the pipeline produced " +
                   format_name(color.format()));
     }
-    write_png_rgba8(path, color.width(), color.height(), color.bytes());
+    write_png_rgba8(path, color.width(), color.height(), color.bytes(), &staged);
   } else if (ext == ".exr") {
     ImageRGBA32F image;
     image.width = color.width();
@@ -73,44 +68,79 @@ void write_color(const std::filesystem::path& path, const Surface& color) {
         image.pixels.insert(image.pixels.end(), {v.x, v.y, v.z, v.w});
       }
     }
-    write_image(path, image, false);
+    write_image(path, image, false, &staged);
   } else {
-    throw Error(path.string() + ": unsupported output extension '" + ext + "' (use .png or .exr)");
+    throw UsageError("--out " + path.string() + ": unsupported output extension '" + ext + "' (use .png or .exr)");
   }
 }
 
-// --aov: the AOV pass instead of the pipeline's image, written as a float EXR.
-void run_aov_render(const RenderOptions& o, const RenderSettings& settings) {
+// --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
+// --set msaa=N, each pixel's sample 0: aov_pass.h).
+void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
   const AovKind kind = *parse_aov_kind(o.aov);
-  const std::filesystem::path out(o.out);
-  if (out.extension() != ".exr") {
-    throw Error(o.out + ": --aov writes float channels; use an .exr output");
-  }
   const Scene scene = load_gltf(o.scene);
   std::vector<double> ms;
   const AovFrame frame =
       render_timed(o.frames.value_or(0), ms, [&] { return render_aov_frame(scene, settings, {kind}); });
-  ensure_parent_folder(out);
-  write_exr_channels(out, settings.width_px, settings.height_px, aov_channel_names(kind),
-                     aov_channels(*frame.surfaces[0], kind));
-  std::printf("%s: %dx%d, AOV %s, %.1f ms on %d threads\nwrote %s\n", o.scene.c_str(), settings.width_px,
-              settings.height_px, o.aov.c_str(), frame.report.total_ms, frame.report.threads, o.out.c_str());
-  print_frame_times(ms);
+  write_exr_channels(o.out, settings.width_px, settings.height_px, aov_channel_names(kind),
+                     aov_channels(*frame.surfaces[0], kind), &outputs.files());
+  if (!o.report.empty()) outputs.text(o.report, frame_report_json(frame.report).dump(2) + "\n");
+  outputs.commit();
+  std::FILE* summary = summary_stream(is_stdout(o.report));
+  std::fprintf(summary, "%s: %dx%d, AOV %s, %d samples per pixel (sample 0 written), %.1f ms on %d threads\n",
+               o.scene.c_str(), settings.width_px, settings.height_px, o.aov.c_str(), frame.report.passes[0].samples,
+               frame.report.total_ms, frame.report.threads);
+  std::fprintf(summary, "wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
+  print_frame_times(summary, ms);
 }
 
-void run_render(const RenderOptions& o) {
+// The summary line: tiles are what a TBDR pass executes; an IMR pass has none to report (its
+// traffic model is the render-target cache, shown in the table).
+void print_summary(std::FILE* out, const RenderOptions& o, const RenderSettings& settings, const Scene& scene,
+                   const FrameReport& report) {
+  uint64_t binned = 0, tiles = 0, non_finite = 0;
+  for (const PassReport& p : report.passes) {
+    binned += p.geometry.triangles_binned;
+    tiles += p.tiles_total;
+    non_finite += p.geometry.triangles_non_finite;
+  }
+  const bool imr = settings.context.tiler.architecture == Architecture::Imr;
+  std::fprintf(out, "%s: %dx%d, pipeline %s, %llu triangles in the scene", o.scene.c_str(), settings.width_px,
+               settings.height_px, o.pipeline.c_str(), static_cast<unsigned long long>(scene.drawn_triangle_count()));
+  if (imr) {
+    std::fprintf(out, ", immediate mode (IMR)");
+  } else {
+    std::fprintf(out, " (%llu binned), %llu tiles", static_cast<unsigned long long>(binned),
+                 static_cast<unsigned long long>(tiles));
+  }
+  std::fprintf(out, ", %.1f ms on %d threads\n", report.total_ms, report.threads);
+  if (non_finite) {
+    std::fprintf(out, "warning: dropped %llu triangles with NaN/Inf positions\n",
+                 static_cast<unsigned long long>(non_finite));
+  }
+  std::fprintf(out, "external traffic: %llu bytes read, %llu bytes written\n",
+               static_cast<unsigned long long>(report.bytes_read()),
+               static_cast<unsigned long long>(report.bytes_written()));
+  std::fputs(frame_report_table(report).c_str(), out);
+}
+
+// Everything that can be checked before loading the scene: a usage error costs no render.
+RenderSettings checked_settings(const RenderOptions& o) {
   if (o.frames && *o.frames < 1) {
     throw UsageError("--frames " + std::to_string(*o.frames) + ": expected a frame count >= 1");
   }
-  // Steady-state frame times: the frames reuse the heap instead of fresh pages (heap_tuning.h).
-  if (o.frames) keep_freed_memory_in_the_heap();
   RenderSettings settings;
   parse_size(o.size, settings.width_px, settings.height_px);
+  try {
+    make_pipeline(o.pipeline);
+  } catch (const Error& e) {
+    throw UsageError(std::string("--pipeline: ") + e.what());
+  }
   settings.pipeline = o.pipeline;
   settings.camera_index = o.camera;
   for (const std::string& kv : o.pipeline_options) {
     const size_t eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw Error("--set '" + kv + "': expected KEY=VALUE");
+    if (eq == std::string::npos || eq == 0) throw UsageError("--set '" + kv + "': expected KEY=VALUE");
     settings.options.set(kv.substr(0, eq), kv.substr(eq + 1));
   }
   // Shorthands for the forward and deferred pipelines' options (an unknown option is still an
@@ -125,68 +155,46 @@ void run_render(const RenderOptions& o) {
   settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
-  const std::filesystem::path out(o.out);
-  const std::string ext = out.extension().string();
+  const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".png" && ext != ".exr") {
-    throw Error(o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
+    throw UsageError("--out " + o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
   }
+  if (!o.aov.empty() && ext != ".exr") {
+    throw UsageError("--out " + o.out + ": --aov writes float channels; use an .exr output");
+  }
+  if (!o.aov.empty() && o.pipeline != "lambert") {
+    throw UsageError("--aov: AOVs are rendered with the lambert pipeline's geometry; --pipeline " + o.pipeline +
+                     " has none");
+  }
+  check_output_option("--out", o.out, false);
+  if (!o.report.empty()) check_output_option("--report", o.report, true);
+  check_distinct_outputs({{"--out", o.out}, {"--report", o.report}});
+  return settings;
+}
+
+void run_render(const RenderOptions& o) {
+  const RenderSettings settings = checked_settings(o);
+  // Steady-state frame times: the frames reuse the heap instead of fresh pages (heap_tuning.h).
+  if (o.frames) keep_freed_memory_in_the_heap();
+  RunOutputs outputs;
   if (!o.aov.empty()) {
-    if (!o.report.empty()) throw Error("--report: not available with --aov");
-    run_aov_render(o, settings);
+    run_aov_render(o, settings, outputs);
     return;
   }
   const Scene scene = load_gltf(o.scene);
   std::vector<double> ms;
   const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, [&] { return render_frame(scene, settings); });
   const FrameReport& report = frame.outputs.report;
-
-  ensure_parent_folder(out);
-  write_color(out, *frame.outputs.color);
-  if (!o.report.empty()) {
-    const std::filesystem::path report_path(o.report);
-    ensure_parent_folder(report_path);
-    const std::string text = frame_report_json(report).dump(2) + "\n";
-    write_file_atomically(report_path, [&](const std::filesystem::path& tmp) {
-      std::ofstream f(tmp, std::ios::binary);
-      f << text;
-      if (!f) throw Error(report_path.string() + ": cannot write");
-    });
-  }
-  uint64_t binned = 0, tiles = 0, non_finite = 0;
-  for (const PassReport& p : report.passes) {
-    binned += p.geometry.triangles_binned;
-    tiles += p.tiles_total;
-    non_finite += p.geometry.triangles_non_finite;
-  }
-  std::printf("%s: %dx%d, pipeline %s, %llu triangles in the scene (%llu binned), %llu tiles, "
-              "%.1f ms on %d threads\n",
-              o.scene.c_str(), settings.width_px, settings.height_px, o.pipeline.c_str(),
-              static_cast<unsigned long long>(scene.drawn_triangle_count()),
-              static_cast<unsigned long long>(binned), static_cast<unsigned long long>(tiles),
-              report.total_ms, report.threads);
-  if (non_finite) {
-    std::printf("warning: dropped %llu triangles with NaN/Inf positions\n",
-                static_cast<unsigned long long>(non_finite));
-  }
-  std::printf("external traffic: %llu bytes read, %llu bytes written\n",
-              static_cast<unsigned long long>(report.bytes_read()),
-              static_cast<unsigned long long>(report.bytes_written()));
-  std::printf("%s", frame_report_table(report).c_str());
-  std::printf("wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
-  print_frame_times(ms);
+  write_color(o.out, *frame.outputs.color, outputs.files());
+  if (!o.report.empty()) outputs.text(o.report, frame_report_json(report).dump(2) + "\n");
+  outputs.commit();
+  std::FILE* summary = summary_stream(is_stdout(o.report));
+  print_summary(summary, o, settings, scene, report);
+  std::fprintf(summary, "wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
+  print_frame_times(summary, ms);
 }
 
 }  // namespace
-
-void parse_size(const std::string& text, int& width_px, int& height_px) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w <= 0 || h <= 0) {
-    throw Error("--size '" + text + "': expected WIDTHxHEIGHT with positive integers, e.g. 1920x1080");
-  }
-  width_px = w;
-  height_px = h;
-}
 
 void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene and report its memory traffic");
@@ -196,15 +204,16 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--pipeline", o->pipeline, "Render pipeline (see `ontile pipelines`)");
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 1280x720)");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 1280x720)");
   cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--tile", o->tile, "Tile size in pixels")->check(CLI::IsMember({4, 8, 16, 32, 64}));
   cmd->add_option("--budget", o->budget, "Tile-memory colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 4096));
   cmd->add_option("--subpixel-bits", o->subpixel_bits, "Vertex snapping precision: 8 (D3D11, default) or 4 (Vulkan minimum)")
       ->check(CLI::IsMember({4, 8}));
-  cmd->add_option("--report", o->report, "Write the JSON traffic report here");
-  cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr)")
+  cmd->add_option("--report", o->report, "Write the JSON traffic report here (- for standard output)");
+  cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr; "
+                                   "with --set msaa=N, each pixel's sample 0)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
   cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
   cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");

@@ -6,7 +6,6 @@
 #include "commands.h"
 #include "scene/gltf_loader.h"
 #include "studies/deferred_study.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
 
@@ -21,19 +20,16 @@ struct StudyOptions {
 void run_deferred_study(const StudyOptions& o) {
   StudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
+  if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
   const Scene scene = load_gltf(o.scene);
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
   const std::string md = deferred_study_markdown(rows, s, std::filesystem::path(o.scene).filename().string());
+  // The tables always go to standard output; --markdown - asks for nothing more.
+  RunOutputs outputs;
+  if (!o.markdown.empty() && !is_stdout(o.markdown)) outputs.text(o.markdown, md);
+  outputs.commit();
   std::fputs(md.c_str(), stdout);
-  if (!o.markdown.empty()) {
-    write_file_atomically(o.markdown, [&](const std::filesystem::path& tmp) {
-      std::FILE* f = std::fopen(tmp.c_str(), "wb");
-      if (!f) throw Error(o.markdown + ": cannot write");
-      const bool ok = std::fwrite(md.data(), 1, md.size(), f) == md.size();
-      if (std::fclose(f) != 0 || !ok) throw Error(o.markdown + ": write failed");
-    });
-  }
 }
 
 }  // namespace
@@ -45,7 +41,7 @@ void add_study_command(CLI::App& app) {
   CLI::App* cmd = study->add_subcommand(
       "deferred", "Classic vs subpass deferred, transient attachments, G-buffer size, MSAA resolve (docs/deferred.md)");
   cmd->add_option("--scene", o->scene, "glTF scene (the docs use the generated atrium)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 2220x1080, the sample's device)");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 2220x1080, the sample's device)");
   cmd->add_option("--tile", o->settings.tile_size_px, "Tile size in pixels (default 16)")->check(CLI::IsMember({8, 16, 32}));
   cmd->add_option("--budget", o->settings.color_budget_bits_per_px, "Colour budget in bits per pixel (default 128)")
       ->check(CLI::Range(32, 1024));
@@ -55,7 +51,7 @@ void add_study_command(CLI::App& app) {
                   "Model an L2 for parameter-buffer reads, in KiB (default 0: none)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
-  cmd->add_option("--markdown", o->markdown, "Also write the tables to this file");
+  cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
   cmd->callback([o] { run_deferred_study(*o); });
 }
 

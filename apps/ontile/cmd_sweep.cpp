@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "analysis/sweep_csv.h"
 #include "analysis/sweep_plot.h"
@@ -12,7 +11,6 @@
 #include "io/image_io.h"
 #include "reference/reference_renderer.h"
 #include "scene/gltf_loader.h"
-#include "util/atomic_file.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
 
@@ -26,25 +24,21 @@ struct SweepOptions {
 
 void require_extension(const std::string& path, const char* option, const char* extension) {
   if (std::filesystem::path(path).extension() != extension) {
-    throw Error(path + ": " + option + " needs a " + extension + " file");
+    throw UsageError(std::string(option) + " " + path + ": needs a " + extension + " file");
   }
 }
 
-void ensure_parent_folder(const std::filesystem::path& path) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-}
-
-void print_row(const SweepRow& r) {
-  std::printf("%-24s %8.2f ms (cpu %8.2f) %9llu B  PSNR %7.3f dB  mean %.4f  max %3d", r.setting.name.c_str(),
-              r.time_ms_median, r.cpu_ms_median, static_cast<unsigned long long>(r.bytes_per_frame()), r.color.psnr_db,
-              r.color.mean_abs, r.color.max_abs);
-  if (r.id_mismatch_vs_default) std::printf("  ids vs default %.4f%%", 100.0 * *r.id_mismatch_vs_default);
-  if (r.normal) std::printf("  normal mean %.4f max %.4f deg", r.normal->mean_deg, r.normal->max_deg);
+void print_row(std::FILE* out, const SweepRow& r) {
+  std::fprintf(out, "%-24s %8.2f ms (cpu %8.2f) %9llu B  PSNR %7.3f dB  mean %.4f  max %3d", r.setting.name.c_str(),
+               r.time_ms_median, r.cpu_ms_median, static_cast<unsigned long long>(r.bytes_per_frame()), r.color.psnr_db,
+               r.color.mean_abs, r.color.max_abs);
+  if (r.id_mismatch_vs_default) std::fprintf(out, "  ids vs default %.4f%%", 100.0 * *r.id_mismatch_vs_default);
+  if (r.normal) std::fprintf(out, "  normal mean %.4f max %.4f deg", r.normal->mean_deg, r.normal->max_deg);
   if (r.normal_storage) {
-    std::printf(" (storage mean %.5f max %.5f)", r.normal_storage->mean_deg, r.normal_storage->max_deg);
+    std::fprintf(out, " (storage mean %.5f max %.5f)", r.normal_storage->mean_deg, r.normal_storage->max_deg);
   }
-  std::printf("\n");
-  std::fflush(stdout);
+  std::fprintf(out, "\n");
+  std::fflush(out);
 }
 
 void run_sweep_command(const SweepOptions& o) {
@@ -54,36 +48,40 @@ void run_sweep_command(const SweepOptions& o) {
   config.frames = o.frames;
   config.threads = o.threads;
   config.reference_spp = o.spp;
-  check_samples_per_pixel(o.spp);
-  require_extension(o.csv, "--csv", ".csv");
+  try {
+    check_samples_per_pixel(o.spp);
+  } catch (const Error& e) {
+    throw UsageError(e.what());
+  }
+  if (!is_stdout(o.csv)) require_extension(o.csv, "--csv", ".csv");
   require_extension(o.plot, "--plot", ".png");
+  check_output_option("--csv", o.csv, true);
+  check_output_option("--plot", o.plot, false);
+  check_distinct_outputs({{"--csv", o.csv}, {"--plot", o.plot}});
+  // With --csv -, standard output is the CSV alone; the progress goes to standard error.
+  std::FILE* summary = summary_stream(is_stdout(o.csv));
   keep_freed_memory_in_the_heap();
   const Scene scene = load_gltf(o.scene);
-  std::printf("%s: %dx%d, %d frames per setting, reference %d spp\n", o.scene.c_str(), config.width_px,
-              config.height_px, config.frames, config.reference_spp);
-  const SweepResult result = run_sweep(scene, config, sweep_settings(), print_row);
-  std::printf("reference: %.0f ms\nPareto front (time, mean error):", result.reference_ms);
+  std::fprintf(summary, "%s: %dx%d, %d frames per setting, reference %d spp\n", o.scene.c_str(), config.width_px,
+               config.height_px, config.frames, config.reference_spp);
+  const SweepResult result =
+      run_sweep(scene, config, sweep_settings(), [summary](const SweepRow& r) { print_row(summary, r); });
+  std::fprintf(summary, "reference: %.0f ms\nPareto front (time, mean error):", result.reference_ms);
   for (const SweepRow& r : result.rows) {
-    if (r.pareto_time) std::printf(" %s", r.setting.name.c_str());
+    if (r.pareto_time) std::fprintf(summary, " %s", r.setting.name.c_str());
   }
-  std::printf("\nPareto front (bytes, mean error):");
+  std::fprintf(summary, "\nPareto front (bytes, mean error):");
   for (const SweepRow& r : result.rows) {
-    if (r.pareto_bytes) std::printf(" %s", r.setting.name.c_str());
+    if (r.pareto_bytes) std::fprintf(summary, " %s", r.setting.name.c_str());
   }
-  std::printf("\n");
+  std::fprintf(summary, "\n");
 
-  const std::filesystem::path csv(o.csv), plot(o.plot);
-  ensure_parent_folder(csv);
-  const std::string text = sweep_csv(result);
-  write_file_atomically(csv, [&](const std::filesystem::path& tmp) {
-    std::ofstream f(tmp, std::ios::binary);
-    f << text;
-    if (!f) throw Error(csv.string() + ": cannot write");
-  });
-  ensure_parent_folder(plot);
+  RunOutputs outputs;
+  outputs.text(o.csv, sweep_csv(result));
   const Canvas canvas = render_scatter_plot(sweep_plot_spec(result, std::filesystem::path(o.scene).filename().string()));
-  write_png_rgba8(plot, canvas.width(), canvas.height(), canvas.rgba());
-  std::printf("wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
+  write_png_rgba8(o.plot, canvas.width(), canvas.height(), canvas.rgba(), &outputs.files());
+  outputs.commit();
+  std::fprintf(summary, "wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
 }
 
 }  // namespace
@@ -92,14 +90,14 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("sweep", "Time against error: lambert settings vs a ray-traced reference (CSV + plot)");
   auto o = std::make_shared<SweepOptions>();
   cmd->add_option("--scene", o->scene, "glTF scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT (default 640x360)");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 640x360)");
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--frames", o->frames, "Timed frames per setting; the median is reported (default 5)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--threads", o->threads, "Rasterizer worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--spp", o->spp, "Reference samples per pixel, a perfect square (default 64)");
-  cmd->add_option("--csv", o->csv, "Write the measurements here (.csv)")->required();
+  cmd->add_option("--csv", o->csv, "Write the measurements here (.csv, or - for standard output)")->required();
   cmd->add_option("--plot", o->plot, "Write the error-vs-time plot here (.png)")->required();
   cmd->callback([o] { run_sweep_command(*o); });
 }

@@ -128,13 +128,25 @@ std::string frame_report_table(const FrameReport& frame) {
   out << line;
   for (const PassReport& p : frame.passes) {
     const double pixels = static_cast<double>(p.width_px) * p.height_px;
-    std::snprintf(line, sizeof line, "%-22s %5dx%-2d %6llu %14s %14s %12llu %10.2f\n",
-                  p.name.c_str(), p.tile_width_px, p.tile_height_px,
-                  static_cast<unsigned long long>(p.tiles_total), mib(p.bytes_read()).c_str(),
-                  mib(p.bytes_written()).c_str(),
+    // An immediate-mode pass has no tiles (its traffic goes through the render-target cache,
+    // shown below); the tile columns say so instead of the simulator's internal work split.
+    const bool imr = p.architecture == "imr";
+    char tile[32] = "     IMR", tiles[32] = "-";
+    if (!imr) {
+      std::snprintf(tile, sizeof tile, "%5dx%-2d", p.tile_width_px, p.tile_height_px);
+      std::snprintf(tiles, sizeof tiles, "%llu", static_cast<unsigned long long>(p.tiles_total));
+    }
+    std::snprintf(line, sizeof line, "%-22s %8s %6s %14s %14s %12llu %10.2f\n", p.name.c_str(), tile,
+                  tiles, mib(p.bytes_read()).c_str(), mib(p.bytes_written()).c_str(),
                   static_cast<unsigned long long>(p.tiles.fragments_shaded),
                   pixels > 0 ? p.tiles.fragments_shaded / pixels : 0.0);
     out << line;
+    if (imr) {
+      std::snprintf(line, sizeof line, "  %-20s %llu hits, %llu misses\n", "render-target cache",
+                    static_cast<unsigned long long>(p.render_target_cache_hits),
+                    static_cast<unsigned long long>(p.render_target_cache_misses));
+      out << line;
+    }
     for (const AttachmentTraffic& a : p.attachments) {
       std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s\n",
                     a.name.c_str(), format_name(a.format), a.transient ? "transient" : "memory",

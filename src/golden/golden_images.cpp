@@ -61,10 +61,15 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
     result.status = GoldenResult::Status::Updated;
     return result;
   }
-  std::filesystem::create_directories(failure_dir);
   result.actual_image = failure_dir / (c.name + ".actual.png");
+  // The failure folder (a documented default, out/golden_failures) is made only when there is a
+  // failure to write into it.
+  const auto write_failure = [&](const std::filesystem::path& path, const std::vector<uint8_t>& rgba) {
+    std::filesystem::create_directories(failure_dir);
+    write_png_rgba8(path, color.width(), color.height(), rgba);
+  };
   if (!std::filesystem::exists(reference)) {
-    write_png_rgba8(result.actual_image, color.width(), color.height(), color.bytes());
+    write_failure(result.actual_image, color.bytes());
     result.status = GoldenResult::Status::Missing;
     result.message = reference.string() + " does not exist (run `ontile golden --update`)";
     return result;
@@ -72,7 +77,7 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
   int w = 0, h = 0;
   const std::vector<uint8_t> expected = read_png_rgba8(reference, w, h);
   if (w != color.width() || h != color.height()) {
-    write_png_rgba8(result.actual_image, color.width(), color.height(), color.bytes());
+    write_failure(result.actual_image, color.bytes());
     result.status = GoldenResult::Status::Mismatch;
     result.message = "size " + std::to_string(color.width()) + "x" + std::to_string(color.height()) +
                      " differs from the golden " + std::to_string(w) + "x" + std::to_string(h);
@@ -96,8 +101,8 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
   if (result.differing_pixels == 0) return result;
   result.status = GoldenResult::Status::Mismatch;
   result.diff_image = failure_dir / (c.name + ".diff.png");
-  write_png_rgba8(result.actual_image, color.width(), color.height(), actual);
-  write_png_rgba8(result.diff_image, color.width(), color.height(), diff);
+  write_failure(result.actual_image, actual);
+  write_failure(result.diff_image, diff);
   result.message = std::to_string(result.differing_pixels) + " pixels differ (max channel difference " +
                    std::to_string(result.max_channel_difference) + "); actual: " +
                    result.actual_image.string() + ", diff: " + result.diff_image.string();

@@ -52,21 +52,32 @@ void check_image_size(const fs::path& path, int width, int height, int channels,
   }
 }
 
-// Writes spec + pixels (of spec.format) with the named OpenImageIO plugin, atomically.
+// An EXR spec without a timestamp: OpenImageIO 2.4's OpenEXR writer adds the current time as
+// `capDate` when the spec has no "DateTime", so identical runs wrote different bytes; an empty
+// DateTime is written as an empty capDate (no date). PNG gets no time chunk from OpenImageIO.
+OIIO::ImageSpec exr_spec(int width, int height, int channels) {
+  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  spec.attribute("compression", "zip");
+  spec.attribute("DateTime", "");
+  return spec;
+}
+
+// Writes spec + pixels (of spec.format) with the named OpenImageIO plugin: staged into `staged`,
+// or on its own, atomically.
 void write_atomically(const fs::path& path, const char* plugin, const OIIO::ImageSpec& spec,
-                      const void* pixels) {
-  try {
-    write_file_atomically(path, [&](const fs::path& tmp_path) {
-      std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(plugin);
-      if (!out) throw Error(path.string() + ": " + one_line(OIIO::geterror()));
-      if (!out->open(tmp_path.string(), spec) || !out->write_image(spec.format, pixels) ||
-          !out->close()) {
-        throw Error(path.string() + ": cannot write image: " + one_line(out->geterror()));
-      }
-    });
-  } catch (const fs::filesystem_error& e) {
-    // The final rename failed (e.g. the target is a folder); the temporary file is gone.
-    throw Error(path.string() + ": cannot write image: " + one_line(e.code().message()));
+                      const void* pixels, StagedOutputs* staged) {
+  const auto write = [&](const fs::path& tmp_path) {
+    std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(plugin);
+    if (!out) throw Error(path.string() + ": " + one_line(OIIO::geterror()));
+    if (!out->open(tmp_path.string(), spec) || !out->write_image(spec.format, pixels) ||
+        !out->close()) {
+      throw Error(path.string() + ": cannot write image: " + one_line(out->geterror()));
+    }
+  };
+  if (staged) {
+    staged->stage(path, write);
+  } else {
+    write_file_atomically(path, write);
   }
 }
 
@@ -127,7 +138,8 @@ std::vector<T> expand_to_rgba(const std::vector<T>& values, const OIIO::ImageSpe
 
 }  // namespace
 
-void write_image(const fs::path& path, const ImageRGBA32F& image, bool linear_to_srgb_for_8bit) {
+void write_image(const fs::path& path, const ImageRGBA32F& image, bool linear_to_srgb_for_8bit,
+                 StagedOutputs* staged) {
   const std::string ext = lowercase_extension(path);
   if (ext != ".png" && ext != ".exr") {
     throw Error(path.string() + ": unsupported image extension '" + path.extension().string() +
@@ -135,9 +147,7 @@ void write_image(const fs::path& path, const ImageRGBA32F& image, bool linear_to
   }
   check_image_size(path, image.width, image.height, 4, image.pixels.size());
   if (ext == ".exr") {
-    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    write_atomically(path, "openexr", spec, image.pixels.data());
+    write_atomically(path, "openexr", exr_spec(image.width, image.height, 4), image.pixels.data(), staged);
     return;
   }
   std::vector<uint8_t> rgba8(image.pixels.size());
@@ -149,34 +159,33 @@ void write_image(const fs::path& path, const ImageRGBA32F& image, bool linear_to
     }
     rgba8[i + 3] = static_cast<uint8_t>(float_to_unorm(image.pixels[i + 3], 8));
   }
-  write_png_rgba8(path, image.width, image.height, rgba8);
+  write_png_rgba8(path, image.width, image.height, rgba8, staged);
 }
 
 void write_png_rgba8(const fs::path& path, int width, int height,
-                     const std::vector<uint8_t>& rgba) {
+                     const std::vector<uint8_t>& rgba, StagedOutputs* staged) {
   require_extension(path, ".png");
   check_image_size(path, width, height, 4, rgba.size());
   OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
   // PNG alpha is unassociated; the bytes are already in that form, so OpenImageIO must not
   // un-premultiply them.
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  write_atomically(path, "png", spec, rgba.data());
+  write_atomically(path, "png", spec, rgba.data(), staged);
 }
 
 void write_exr_channels(const fs::path& path, int width, int height,
                         const std::vector<std::string>& channel_names,
-                        const std::vector<float>& interleaved) {
+                        const std::vector<float>& interleaved, StagedOutputs* staged) {
   require_extension(path, ".exr");
   const int channels = static_cast<int>(channel_names.size());
   check_image_size(path, width, height, channels, interleaved.size());
-  OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec spec = exr_spec(width, height, channels);
   spec.channelnames = channel_names;
   spec.alpha_channel = -1;
   for (int c = 0; c < channels; ++c) {
     if (channel_names[c] == "A") spec.alpha_channel = c;
   }
-  spec.attribute("compression", "zip");
-  write_atomically(path, "openexr", spec, interleaved.data());
+  write_atomically(path, "openexr", spec, interleaved.data(), staged);
 }
 
 ImageRGBA32F read_image(const fs::path& path) {

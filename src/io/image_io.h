@@ -1,5 +1,6 @@
-// Image files in and out (OpenImageIO): atomic 8-bit PNG and float32 OpenEXR output, reading
-// of any format OpenImageIO knows. Every failure is an ontile::Error naming the file.
+// Image files in and out (OpenImageIO): atomic 8-bit PNG and float32 OpenEXR output with the
+// same bytes on every run, reading of any format OpenImageIO knows. Every failure is an
+// ontile::Error naming the file.
 #pragma once
 #include <cstdint>
 #include <filesystem>
@@ -7,6 +8,8 @@
 #include <vector>
 
 namespace ontile {
+
+class StagedOutputs;
 
 struct ImageRGBA32F {
   int width = 0, height = 0;
@@ -19,19 +22,22 @@ struct ImageRGBA32F {
 // display-referred and quantized as UNORM (clamp, round to nearest). Alpha is always UNORM.
 // Other extensions, size mismatches and write failures throw Error; the target is then left as it
 // was and no temporary file remains (write_file_atomically).
+// Every writer here: with `staged`, the file is only staged there (written to its temporary)
+// and appears when the caller commits; without, it is written on its own, atomically. Files
+// carry no timestamp: identical images give identical bytes.
 void write_image(const std::filesystem::path& path, const ImageRGBA32F& image,
-                 bool linear_to_srgb_for_8bit);
+                 bool linear_to_srgb_for_8bit, StagedOutputs* staged = nullptr);
 
 // Writes width x height RGBA bytes unchanged (e.g. attachments already quantized to RGBA8) as an
 // 8-bit PNG; the extension must be ".png".
 void write_png_rgba8(const std::filesystem::path& path, int width, int height,
-                     const std::vector<uint8_t>& rgba);
+                     const std::vector<uint8_t>& rgba, StagedOutputs* staged = nullptr);
 
 // Writes a float32 OpenEXR with arbitrary channels (AOVs such as "Z" or "N.x", "N.y", "N.z"):
 // interleaved holds width * height * channel_names.size() values. The extension must be ".exr".
 void write_exr_channels(const std::filesystem::path& path, int width, int height,
                         const std::vector<std::string>& channel_names,
-                        const std::vector<float>& interleaved);
+                        const std::vector<float>& interleaved, StagedOutputs* staged = nullptr);
 
 // Reads the first subimage of any file OpenImageIO can read, as the values the file stores
 // (8-bit files give code / 255, no colour-space conversion). Channels are expanded to RGBA:

@@ -45,7 +45,7 @@ TEST(Cli, EveryVerbHasHelp) {
 
 void expect_error(const std::string& args, const std::string& phrase) {
   const CliRun r = run_cli(args);
-  EXPECT_NE(r.exit_code, 0) << args;
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
   EXPECT_NE(r.output.find(phrase), std::string::npos) << args << "\n" << r.output;
 }
 

@@ -9,7 +9,9 @@
 #include <bit>
 #include <fstream>
 #include <iterator>
+#include <chrono>
 #include <string>
+#include <thread>
 
 #include "raster/pixel_format.h"
 #include "util/error.h"
@@ -133,6 +135,28 @@ TEST_F(ImageIoTest, ExrChannelsAndExpansionToRgba) {
             (std::vector<float>{1.0f, -2.0f, 3.0f, 1.0f, 4.0f, 5.0f, -6.0f, 1.0f}));
 }
 
+// Identical images give identical files: OpenImageIO would stamp EXRs with the current time
+// (capDate), which has one-second resolution, so the second write comes more than a second later.
+TEST_F(ImageIoTest, TheSameImageWrittenTwiceGivesTheSameBytes) {
+  const ImageRGBA32F image{3, 2, {0.1f, 0.2f, 0.3f, 1.0f, 1.5f, -2.0f, 0.0f, 0.5f, 1, 1, 1, 1,
+                                  0, 0, 0, 0, 0.25f, 0.5f, 0.75f, 1, 9, 8, 7, 6}};
+  const std::vector<uint8_t> rgba = pattern_bytes(3 * 2 * 4);
+  const auto write_all = [&](const std::string& suffix) {
+    write_image(dir_ / ("image" + suffix + ".exr"), image, false);
+    write_exr_channels(dir_ / ("aov" + suffix + ".exr"), 3, 2, {"Z"}, {1, 2, 3, 4, 5, 6});
+    write_png_rgba8(dir_ / ("image" + suffix + ".png"), 3, 2, rgba);
+  };
+  write_all("1");
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  write_all("2");
+  for (const char* name : {"image%.exr", "aov%.exr", "image%.png"}) {
+    std::string first = name, second = name;
+    first.replace(first.find('%'), 1, "1");
+    second.replace(second.find('%'), 1, "2");
+    EXPECT_TRUE(file_bytes(dir_ / first) == file_bytes(dir_ / second)) << first << " and " << second << " differ";
+  }
+}
+
 TEST_F(ImageIoTest, BadExtensionsAndSizesLeaveNoFile) {
   const ImageRGBA32F image{1, 1, {1.0f, 1.0f, 1.0f, 1.0f}};
   expect_error_naming(dir_ / "x.jpg", [&] { write_image(dir_ / "x.jpg", image, true); });
@@ -154,7 +178,7 @@ TEST_F(ImageIoTest, UnwritableTargetsLeaveNoFile) {
   const ImageRGBA32F image{1, 1, {1.0f, 1.0f, 1.0f, 1.0f}};
   const fs::path missing_folder = dir_ / "no_such_folder" / "out.png";
   expect_error_naming(missing_folder, [&] { write_image(missing_folder, image, true); });
-  // A target that is a folder: the temporary file is written, the rename fails, nothing remains.
+  // A target that is a folder is refused before anything is written.
   fs::create_directory(dir_ / "taken.exr");
   expect_error_naming(dir_ / "taken.exr", [&] { write_image(dir_ / "taken.exr", image, true); });
   fs::create_directory(dir_ / "taken.png");

@@ -3,6 +3,7 @@
 #include "pipelines/aov/aov_pass.h"
 
 #include "context/scene_renderers.h"
+#include "pipelines/lambert_options.h"
 #include "pipelines/lit_shader.h"
 #include "shaders_cpp/batch_helpers.h"
 #include "util/error.h"
@@ -106,7 +107,7 @@ std::vector<float> aov_channels(const Surface& surface, AovKind kind) {
 }
 
 std::vector<Surface*> render_aov_pass(RenderContext& context, const FrameInputs& in,
-                                      const std::vector<AovKind>& kinds, FrameReport* report) {
+                                      const std::vector<AovKind>& kinds, FrameReport* report, int samples) {
   if (kinds.empty() || kinds.size() > static_cast<size_t>(kMaxColorTargets)) {
     throw Error("AOV pass: " + std::to_string(kinds.size()) + " AOVs requested (1.." +
                 std::to_string(kMaxColorTargets) + ")");
@@ -132,7 +133,7 @@ std::vector<Surface*> render_aov_pass(RenderContext& context, const FrameInputs&
   std::vector<int> outputs;
   for (AovKind kind : kinds) {
     Surface* s = context.create_surface(std::string("aov ") + aov_name(kind), PixelFormat::RGBA32_FLOAT,
-                                        in.width_px, in.height_px);
+                                        in.width_px, in.height_px, samples);
     surfaces.push_back(s);
     outputs.push_back(static_cast<int>(attachments.size()));
     attachments.push_back({aov_name(kind), PixelFormat::RGBA32_FLOAT, LoadAction::Clear, StoreAction::Store,
@@ -140,7 +141,7 @@ std::vector<Surface*> render_aov_pass(RenderContext& context, const FrameInputs&
   }
   attachments.push_back({"depth", PixelFormat::D32_FLOAT, LoadAction::Clear, StoreAction::DontCare,
                          glm::vec4(1.0f), nullptr, nullptr});
-  context.begin_render_pass("aov", in.width_px, in.height_px, 1, attachments,
+  context.begin_render_pass("aov", in.width_px, in.height_px, samples, attachments,
                             static_cast<int>(attachments.size()) - 1);
   context.begin_subpass(outputs);
   // Only the opaque queue: blended surfaces write no depth in lambert, so they own no pixel.
@@ -159,7 +160,12 @@ AovFrame render_aov_frame(const Scene& scene, const RenderSettings& settings,
     throw Error("--aov: AOVs are rendered with the lambert pipeline's geometry and materials; "
                 "pipeline '" + settings.pipeline + "' is not supported");
   }
+  const LambertOptions lambert = parse_lambert_options(settings.options);
   settings.options.reject_unknown("lambert");
+  if (lambert.depth_format != LambertOptions{}.depth_format || lambert.reversed_z || lambert.normals ||
+      lambert.filtering != LambertOptions{}.filtering) {
+    throw Error("--aov: of lambert's options only msaa applies to AOVs (they are D32F depth, float normals)");
+  }
   if (settings.width_px <= 0 || settings.height_px <= 0 || settings.width_px > kMaxTargetSizePx ||
       settings.height_px > kMaxTargetSizePx) {
     throw Error("image size " + std::to_string(settings.width_px) + "x" +
@@ -173,7 +179,7 @@ AovFrame render_aov_frame(const Scene& scene, const RenderSettings& settings,
   inputs.camera = frame.camera;
   inputs.width_px = settings.width_px;
   inputs.height_px = settings.height_px;
-  frame.surfaces = render_aov_pass(*frame.context, inputs, kinds, &frame.report);
+  frame.surfaces = render_aov_pass(*frame.context, inputs, kinds, &frame.report, lambert.msaa_samples);
   return frame;
 }
 
