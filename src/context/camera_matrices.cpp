@@ -58,7 +58,7 @@ glm::dmat4 orthographic_reversed_zo(double xmag, double ymag, double znear, doub
 
 CameraMatrices camera_matrices(const Camera& camera, double aspect_ratio, bool reversed_z) {
   CameraMatrices m;
-  const glm::dmat4 world(camera.world);
+  const glm::dmat4& world = camera.world;
   m.view = glm::inverse(world);
   m.position = glm::dvec3(world[3]);
   if (camera.type == Camera::Type::Perspective) {

@@ -16,12 +16,21 @@ std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& m) {
   return {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
 }
 
+// Bounds are float and come from a float transform of the corners (scene_renderers.cpp), so
+// each coordinate may be a few float spacings inside the true box (a spacing is 1/16 unit at
+// 1e6 from the origin). A box counts as outside only when it is farther out than 8 spacings of
+// its largest coordinate (2^-20 relative), so culling stays conservative far from the origin.
+constexpr double kBoundsRoundingRelative = 1.0 / (1 << 20);
+
 bool box_outside(const std::array<glm::dvec4, 6>& planes, const Bounds& b) {
+  const glm::dvec3 magnitude = glm::max(glm::abs(glm::dvec3(b.min)), glm::abs(glm::dvec3(b.max)));
   for (const glm::dvec4& p : planes) {
     // The box corner furthest along the plane normal (the "p-vertex").
     const glm::dvec3 v(p.x >= 0 ? b.max.x : b.min.x, p.y >= 0 ? b.max.y : b.min.y,
                        p.z >= 0 ? b.max.z : b.min.z);
-    if (p.x * v.x + p.y * v.y + p.z * v.z + p.w < 0.0) return true;
+    const double rounding_allowance =
+        kBoundsRoundingRelative * glm::dot(glm::abs(glm::dvec3(p)), magnitude);
+    if (p.x * v.x + p.y * v.y + p.z * v.z + p.w < -rounding_allowance) return true;
   }
   return false;
 }

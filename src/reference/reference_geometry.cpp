@@ -79,6 +79,24 @@ ReferenceGeometry::ReferenceGeometry(const std::vector<Renderer>& renderers,
     }
     triangle_count_ += g.mesh->triangle_count();
   }
+  glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-low);
+  for (const RendererGeometry& g : renderers_) {
+    for (const glm::dvec3& p : g.world_positions) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) continue;
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+  }
+  if (low.x <= high.x) {
+    // The bounds' centre rounded to a multiple of a power of two `grid` at least twice the
+    // scene's extent: 0 for a scene around the origin (Embree gets world coordinates, as
+    // before), and for a scene moved by a multiple of `grid` exactly that offset, so its float
+    // coordinates are the unmoved scene's.
+    const glm::dvec3 extent = high - low;
+    const double grid = std::exp2(std::ceil(std::log2(std::max(
+        {2.0 * std::max({extent.x, extent.y, extent.z}), 1.0}))));
+    embree_origin_ = glm::round(0.5 * (low + high) / grid) * grid;
+  }
   if (triangle_count_ >= kMaxExactFloatPrimitiveIds) {
     throw Error("reference renderer: the scene has " + std::to_string(triangle_count_) +
                 " triangles; primitive-id AOVs are floats, exact only below 2^24 = 16777216");
@@ -105,7 +123,9 @@ ReferenceGeometry::ReferenceGeometry(const std::vector<Renderer>& renderers,
         geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles));
     throw_on_device_error(embree_->device, "buffer allocation");
     for (size_t v = 0; v < g.world_positions.size(); ++v) {
-      for (int c = 0; c < 3; ++c) vertices[3 * v + c] = static_cast<float>(g.world_positions[v][c]);
+      for (int c = 0; c < 3; ++c) {
+        vertices[3 * v + c] = static_cast<float>(g.world_positions[v][c] - embree_origin_[c]);
+      }
     }
     std::copy(g.mesh->indices.begin(), g.mesh->indices.begin() + 3 * size_t{triangles}, indices);
     rtcCommitGeometry(geom);
@@ -136,9 +156,9 @@ void ReferenceGeometry::intersect_all(const glm::dvec3& origin, const glm::dvec3
   ctx.t_max = t_max;
   ctx.out = &out;
   RTCRayHit rh{};
-  rh.ray.org_x = static_cast<float>(origin.x);
-  rh.ray.org_y = static_cast<float>(origin.y);
-  rh.ray.org_z = static_cast<float>(origin.z);
+  rh.ray.org_x = static_cast<float>(origin.x - embree_origin_.x);
+  rh.ray.org_y = static_cast<float>(origin.y - embree_origin_.y);
+  rh.ray.org_z = static_cast<float>(origin.z - embree_origin_.z);
   rh.ray.dir_x = static_cast<float>(direction.x);
   rh.ray.dir_y = static_cast<float>(direction.y);
   rh.ray.dir_z = static_cast<float>(direction.z);

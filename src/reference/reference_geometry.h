@@ -57,6 +57,11 @@ class ReferenceGeometry {
   struct EmbreeHandles;
 
   std::vector<RendererGeometry> renderers_;
+  // Embree's float vertices and ray origins are relative to this point (double), near the
+  // centre of the scene's bounds and 0 for a scene around the origin (see the constructor).
+  // Far from the origin, float world coordinates would move the triangles Embree tests by up
+  // to 1/32 unit at 1e6.
+  glm::dvec3 embree_origin_{0.0};
   uint64_t triangle_count_ = 0;
   EmbreeHandles* embree_ = nullptr;
 };

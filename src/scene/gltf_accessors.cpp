@@ -173,13 +173,15 @@ PackedElements pack_elements(const tinygltf::Model& model, int accessor_index,
   }
   packed.element_bytes =
       static_cast<size_t>(component_bytes) * static_cast<size_t>(packed.components);
-  packed.bytes.assign(packed.count * packed.element_bytes, 0);
-
+  // Every bound is checked before the elements are allocated: a count of 2^29 over a 36-byte
+  // bufferView must fail here, not after gigabytes of zeros.
+  const uint8_t* source = nullptr;
+  size_t stride = 0;
   if (accessor.bufferView >= 0 && packed.count > 0) {
     const auto& view =
         checked_view(model, accessor.bufferView, file_label, accessor_index, "bufferView");
     // byteStride 0 means tightly packed (spec 3.6.2.4); a stride must hold a whole element.
-    const size_t stride = view.byteStride == 0 ? packed.element_bytes : view.byteStride;
+    stride = view.byteStride == 0 ? packed.element_bytes : view.byteStride;
     if (stride < packed.element_bytes || stride % static_cast<size_t>(component_bytes) != 0) {
       fail(file_label, accessor_index,
            "byteStride " + std::to_string(stride) + " does not fit elements of " +
@@ -197,7 +199,10 @@ PackedElements pack_elements(const tinygltf::Model& model, int accessor_index,
                std::to_string(accessor.bufferView) + " (" + std::to_string(view.byteLength) +
                " bytes)");
     }
-    const uint8_t* source = view_bytes(model, view) + begin;
+    source = view_bytes(model, view) + begin;
+  }
+  packed.bytes.assign(packed.count * packed.element_bytes, 0);
+  if (source) {
     for (size_t i = 0; i < packed.count; ++i) {
       std::memcpy(packed.bytes.data() + i * packed.element_bytes, source + i * stride,
                   packed.element_bytes);

@@ -1,15 +1,12 @@
-// glTF 2.0 loader entry point: reads the file with tinygltf, turns its errors into one-line
-// ontile::Errors, checks required extensions and flattens the chosen scene's node tree into
-// mesh instances, cameras and KHR_lights_punctual lights.
+// glTF 2.0 loader entry point: reads the file (gltf_reader.cpp), converts meshes and materials,
+// and flattens the chosen scene's node tree, composed in double, into mesh instances, cameras
+// and KHR_lights_punctual lights.
 #include "scene/gltf_loader.h"
 
 #include <tiny_gltf.h>
 
-#include <array>
 #include <cmath>
-#include <fstream>
 #include <numbers>
-#include <sstream>
 
 #include "scene/gltf_internal.h"
 #include "util/error.h"
@@ -21,52 +18,23 @@ void throw_error(const LoadContext& context, const std::string& problem) {
   throw Error(context.file_label + ": " + problem);
 }
 
+void charge_geometry_bytes(const LoadContext& context, uint64_t bytes, const std::string& what) {
+  const uint64_t limit = context.options.limits.max_decoded_geometry_bytes;
+  if (bytes > limit || context.decoded_geometry_bytes > limit - bytes) {
+    throw_error(context, what + " would bring the decoded geometry to " +
+                             std::to_string(context.decoded_geometry_bytes + bytes) +
+                             " bytes, more than " + std::to_string(limit) +
+                             " (GltfLimits::max_decoded_geometry_bytes)");
+  }
+  context.decoded_geometry_bytes += bytes;
+}
+
 }  // namespace gltf
 
 namespace {
 
 using gltf::LoadContext;
 using gltf::throw_error;
-
-// tinygltf reports problems as several newline-terminated sentences; they become one line.
-std::string one_line(const std::string& text) {
-  std::istringstream lines(text);
-  std::string line, joined;
-  while (std::getline(lines, line)) {
-    const size_t first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos) continue;
-    const size_t last = line.find_last_not_of(" \t\r");
-    if (!joined.empty()) joined += "; ";
-    joined += line.substr(first, last - first + 1);
-  }
-  return joined;
-}
-
-// The lines of tinygltf's text that mention `subject` (all of them when none does), as one line.
-std::string lines_mentioning(const std::string& text, const std::string& subject) {
-  std::istringstream lines(text);
-  std::string line, matching;
-  while (std::getline(lines, line)) {
-    if (!subject.empty() && line.find(subject) != std::string::npos) matching += line + "\n";
-  }
-  return one_line(matching.empty() ? text : matching);
-}
-
-bool starts_with_glb_magic(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::array<char, 4> magic{};
-  file.read(magic.data(), magic.size());
-  return file.gcount() == 4 && std::string(magic.data(), 4) == "glTF";
-}
-
-// Extensions that the loader understands well enough to draw the file correctly. Lights and
-// emissive strength are applied; KHR_mesh_quantization needs only the integer attribute
-// decoding every accessor gets; KHR_texture_transform is accepted but not applied (textures
-// using it sample with untransformed UVs).
-bool is_supported_required_extension(const std::string& name) {
-  return name == "KHR_lights_punctual" || name == "KHR_materials_emissive_strength" ||
-         name == "KHR_texture_transform" || name == "KHR_mesh_quantization";
-}
 
 // A node's local transform: "matrix" (column-major) or T * R * S (spec 3.5.3). The quaternion
 // (x, y, z, w) is used as stored; the spec requires it to be unit length.
@@ -101,7 +69,7 @@ glm::dmat4 local_transform(const tinygltf::Node& node) {
 // Cameras ignore scale (and any shear from scaled parents): the camera-to-world matrix keeps
 // the node's world position and viewing direction (-Z exactly), with +Y made orthogonal to it
 // (Gram-Schmidt) and X completing a right-handed frame.
-glm::mat4 rigid_camera_frame(const glm::dmat4& world) {
+glm::dmat4 rigid_camera_frame(const glm::dmat4& world) {
   const glm::dvec3 back = glm::normalize(glm::dvec3(world[2]));
   glm::dvec3 up = glm::dvec3(world[1]);
   up = glm::normalize(up - back * glm::dot(up, back));
@@ -111,17 +79,20 @@ glm::mat4 rigid_camera_frame(const glm::dmat4& world) {
   frame[1] = glm::dvec4(up, 0.0);
   frame[2] = glm::dvec4(back, 0.0);
   frame[3] = glm::dvec4(glm::dvec3(world[3]), 1.0);
-  return glm::mat4(frame);
+  return frame;
 }
 
-Bounds transform_bounds(const Bounds& bounds, const glm::mat4& world) {
+// World bounds stay float (scene.h); they are computed with the float-rounded matrix, as before
+// the transforms became double, so that the default camera framing them keeps its bits.
+Bounds transform_bounds(const Bounds& bounds, const glm::dmat4& world) {
   Bounds result;
   if (bounds.empty()) return result;
+  const glm::mat4 world_float(world);
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec3 p((corner & 1) ? bounds.max.x : bounds.min.x,
                       (corner & 2) ? bounds.max.y : bounds.min.y,
                       (corner & 4) ? bounds.max.z : bounds.min.z);
-    result.extend(glm::vec3(world * glm::vec4(p, 1.0f)));
+    result.extend(glm::vec3(world_float * glm::vec4(p, 1.0f)));
   }
   return result;
 }
@@ -187,29 +158,116 @@ Light convert_light(const LoadContext& context, int light_index, const glm::dmat
   return light;
 }
 
+bool all_finite(const glm::dmat4& m) {
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row)
+      if (!std::isfinite(m[column][row])) return false;
+  return true;
+}
+
+// Flattens the node tree depth first, each node before its children and children in order
+// (the order of a recursive walk, which the primitive ids and camera order follow), with an
+// explicit stack so that depth costs heap, not call stack. glTF 2.0 3.5.2 makes the nodes a
+// forest: a node has at most one parent and no cycles, so each node is met once.
 class SceneFlattener {
  public:
   SceneFlattener(const LoadContext& context, Scene& scene)
-      : context_(context), scene_(scene), on_path_(context.model.nodes.size(), false) {}
+      : context_(context), scene_(scene), parent_(context.model.nodes.size(), -1),
+        visited_(context.model.nodes.size(), false) {}
 
-  void visit(int node_index, const glm::dmat4& parent_world) {
-    const auto& model = context_.model;
-    if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size()) {
+  void flatten(const std::vector<int>& roots) {
+    record_single_parents();
+    std::vector<Pending> stack;
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) {
+      check_exists(*root);
+      stack.push_back({*root, -1, 1, glm::dmat4(1.0)});
+    }
+    const int max_depth = context_.options.limits.max_node_depth;
+    while (!stack.empty()) {
+      const Pending pending = stack.back();
+      stack.pop_back();
+      const size_t n = static_cast<size_t>(pending.node);
+      if (visited_[n]) reached_twice(pending);
+      if (pending.depth > max_depth) {
+        throw_error(context_, "node " + std::to_string(pending.node) + " is nested " +
+                                  std::to_string(pending.depth) + " levels deep, more than " +
+                                  std::to_string(max_depth) + " (GltfLimits::max_node_depth)");
+      }
+      visited_[n] = true;
+      const tinygltf::Node& node = context_.model.nodes[n];
+      const glm::dmat4 world = pending.parent_world * local_transform(node);
+      visit(pending.node, node, world);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+        stack.push_back({*child, pending.node, pending.depth + 1, world});
+      }
+    }
+  }
+
+ private:
+  struct Pending {
+    int node;
+    int parent;  // -1 for a scene root
+    int depth;   // roots have depth 1
+    glm::dmat4 parent_world;
+  };
+
+  void check_exists(int node_index) const {
+    const size_t count = context_.model.nodes.size();
+    if (node_index < 0 || static_cast<size_t>(node_index) >= count) {
       throw_error(context_, "node " + std::to_string(node_index) +
-                                " does not exist (the file has " +
-                                std::to_string(model.nodes.size()) + " nodes)");
+                                " does not exist (the file has " + std::to_string(count) +
+                                " nodes)");
     }
-    if (on_path_[static_cast<size_t>(node_index)]) {
-      throw_error(context_, "node " + std::to_string(node_index) + " is its own ancestor (cycle)");
+  }
+
+  // glTF 2.0 3.5.2: "each node MUST have at most one parent". Without this a node listed twice
+  // per level multiplies the paths (40 levels: 2^40 instances).
+  void record_single_parents() {
+    const auto& nodes = context_.model.nodes;
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      for (int child : nodes[n].children) {
+        check_exists(child);
+        int& parent = parent_[static_cast<size_t>(child)];
+        if (parent == static_cast<int>(n)) {
+          throw_error(context_, "node " + std::to_string(child) + " is listed twice among the "
+                                "children of node " + std::to_string(n) +
+                                " (glTF 2.0 3.5.2: a node has at most one parent)");
+        }
+        if (parent >= 0) {
+          throw_error(context_, "node " + std::to_string(child) + " is a child of both node " +
+                                    std::to_string(parent) + " and node " + std::to_string(n) +
+                                    " (glTF 2.0 3.5.2: a node has at most one parent)");
+        }
+        parent = static_cast<int>(n);
+      }
     }
-    const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
-    const glm::dmat4 world = parent_world * local_transform(node);
+  }
+
+  [[noreturn]] void reached_twice(const Pending& pending) const {
+    // With single parents, meeting a node again means it is its own ancestor, or a scene root
+    // that is also listed twice or is some node's child.
+    int ancestor = pending.parent;
+    for (size_t steps = 0; ancestor >= 0 && steps <= parent_.size(); ++steps) {
+      if (ancestor == pending.node) {
+        throw_error(context_, "node " + std::to_string(pending.node) +
+                                  " is its own ancestor (cycle; glTF 2.0 3.5.2)");
+      }
+      ancestor = parent_[static_cast<size_t>(ancestor)];
+    }
+    throw_error(context_, "node " + std::to_string(pending.node) +
+                              " is reached twice from the scene's roots (a root listed twice, or "
+                              "a root that is also a child; glTF 2.0 3.5.2)");
+  }
+
+  void visit(int node_index, const tinygltf::Node& node, const glm::dmat4& world) {
+    const auto& model = context_.model;
     if (node.mesh >= 0) add_instance(node_index, node, world);
     if (node.camera >= 0) {
       if (static_cast<size_t>(node.camera) >= model.cameras.size()) {
         throw_error(context_, "node " + std::to_string(node_index) + " refers to camera " +
                                   std::to_string(node.camera) + ", which does not exist");
       }
+      check_camera_transform(node_index, node.camera, world);
       scene_.cameras.push_back(convert_camera(context_, node.camera, world));
     }
     const auto light_extension = node.extensions.find("KHR_lights_punctual");
@@ -221,23 +279,39 @@ class SceneFlattener {
       }
       scene_.lights.push_back(convert_light(context_, light, world));
     }
-    on_path_[static_cast<size_t>(node_index)] = true;
-    for (int child : node.children) visit(child, world);
-    on_path_[static_cast<size_t>(node_index)] = false;
   }
 
- private:
+  // A camera needs a viewing frame: a zero scale or collapsed axes leave no direction to look
+  // down (the image would be blank), so the file is refused rather than drawn.
+  void check_camera_transform(int node_index, int camera_index, const glm::dmat4& world) const {
+    const double determinant = glm::determinant(glm::dmat3(world));
+    if (!all_finite(world) || !std::isfinite(determinant) || determinant == 0.0 ||
+        !all_finite(rigid_camera_frame(world))) {
+      throw_error(context_, "node " + std::to_string(node_index) + " (camera " +
+                                std::to_string(camera_index) +
+                                ") has a degenerate transform (zero scale, collapsed axes or "
+                                "non-finite values; determinant " +
+                                std::to_string(determinant) + "), so the camera has no view");
+    }
+  }
+
   void add_instance(int node_index, const tinygltf::Node& node, const glm::dmat4& world) {
     if (static_cast<size_t>(node.mesh) >= scene_.meshes.size()) {
       throw_error(context_, "node " + std::to_string(node_index) + " refers to mesh " +
                                 std::to_string(node.mesh) + ", which does not exist");
+    }
+    const uint64_t max_instances = context_.options.limits.max_instances;
+    if (scene_.instances.size() >= max_instances) {
+      throw_error(context_, "node " + std::to_string(node_index) + " would be mesh instance " +
+                                std::to_string(scene_.instances.size() + 1) + ", more than " +
+                                std::to_string(max_instances) + " (GltfLimits::max_instances)");
     }
     MeshInstance instance;
     instance.mesh = node.mesh;
     instance.node_name = node.name;
     // A skinned mesh ignores its node's transform (spec 3.7.3); without animation ontile draws
     // it in its bind pose, which is the mesh's own coordinates.
-    instance.world = node.skin >= 0 ? glm::mat4(1.0f) : glm::mat4(world);
+    instance.world = node.skin >= 0 ? glm::dmat4(1.0) : world;
     Bounds object_bounds;
     for (const MeshPrimitive& primitive :
          scene_.meshes[static_cast<size_t>(node.mesh)].primitives) {
@@ -250,7 +324,8 @@ class SceneFlattener {
 
   const LoadContext& context_;
   Scene& scene_;
-  std::vector<bool> on_path_;
+  std::vector<int> parent_;    // -1: no parent
+  std::vector<bool> visited_;
 };
 
 // Root nodes of the scene to draw (spec 3.5.2): options.scene_index, else the file's "scene",
@@ -287,51 +362,6 @@ std::vector<int> root_nodes(const LoadContext& context) {
   return roots;
 }
 
-tinygltf::Model read_model(const std::filesystem::path& path, const std::string& label,
-                           GltfLoadStats& stats) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw Error(label + (std::filesystem::exists(path, error) ? ": not a regular file"
-                                                              : ": file not found"));
-  }
-  const bool binary = starts_with_glb_magic(path);
-  if (!binary && path.extension() == ".glb") {
-    throw Error(label + ": not a GLB file (no 'glTF' magic at the start)");
-  }
-  tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
-  std::string tiny_error, tiny_warning;
-  const bool loaded =
-      binary ? loader.LoadBinaryFromFile(&model, &tiny_error, &tiny_warning, path.string())
-             : loader.LoadASCIIFromFile(&model, &tiny_error, &tiny_warning, path.string());
-  if (!loaded) {
-    const std::string reason = one_line(tiny_error + "\n" + tiny_warning);
-    // tinygltf passes on the JSON parser's message; name the problem plainly in front of it.
-    const bool json_syntax = reason.find("parse_error") != std::string::npos ||
-                             reason.find("parse JSON") != std::string::npos;
-    throw Error(label + (json_syntax ? ": invalid JSON: " : ": cannot load glTF: ") +
-                (reason.empty() ? "unknown tinygltf error" : reason));
-  }
-  for (const std::string& extension : model.extensionsRequired) {
-    if (!is_supported_required_extension(extension)) {
-      throw Error(label + ": unsupported required extension " + extension);
-    }
-  }
-  // tinygltf only warns when an external image is missing or unreadable; ontile refuses to
-  // draw a model with a texture silently missing.
-  for (size_t i = 0; i < model.images.size(); ++i) {
-    const tinygltf::Image& image = model.images[i];
-    if (image.image.empty()) {
-      throw Error(label + ": image " + std::to_string(i) +
-                  (image.uri.empty() ? std::string() : " ('" + image.uri + "')") +
-                  " could not be loaded: " + lines_mentioning(tiny_warning, image.uri));
-    }
-  }
-  const std::string warnings = one_line(tiny_warning);
-  if (!warnings.empty()) stats.warnings.push_back(warnings);
-  return model;
-}
-
 }  // namespace
 
 Scene load_gltf(const std::filesystem::path& path, const GltfLoadOptions& options,
@@ -340,8 +370,9 @@ Scene load_gltf(const std::filesystem::path& path, const GltfLoadOptions& option
   GltfLoadStats& out_stats = stats ? *stats : local_stats;
   out_stats = GltfLoadStats{};
   const std::string label = path.string();
-  const tinygltf::Model model = read_model(path, label, out_stats);
-  const LoadContext context{model, label, options, out_stats};
+  const tinygltf::Model model = gltf::read_model(path, label, options, out_stats);
+  uint64_t decoded_geometry_bytes = 0;
+  const LoadContext context{model, label, options, out_stats, decoded_geometry_bytes};
 
   Scene scene;
   scene.source_path = label;
@@ -349,8 +380,7 @@ Scene load_gltf(const std::filesystem::path& path, const GltfLoadOptions& option
     scene.meshes.push_back(gltf::convert_mesh(context, static_cast<int>(m)));
   }
   scene.materials = gltf::convert_materials(context);
-  SceneFlattener flattener(context, scene);
-  for (int root : root_nodes(context)) flattener.visit(root, glm::dmat4(1.0));
+  SceneFlattener(context, scene).flatten(root_nodes(context));
   return scene;
 }
 

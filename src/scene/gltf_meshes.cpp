@@ -39,6 +39,8 @@ std::vector<float> read_attribute(const LoadContext& context, int accessor_index
                              where + ") has " + std::to_string(accessor.count) +
                              " elements, POSITION has " + std::to_string(expected_count));
   }
+  charge_geometry_bytes(context, uint64_t{accessor.count} * uint64_t(components) * sizeof(float),
+                        where + " attribute " + name);
   return read_accessor_floats(context.model, accessor_index, context.file_label);
 }
 
@@ -77,7 +79,13 @@ std::vector<uint32_t> triangle_list(int mode, const std::vector<uint32_t>& seque
 // Spec 3.7.2.1: without NORMAL, clients must use flat normals (and ignore TANGENT). Each
 // triangle gets its own three vertices so the face normal is exact; only these primitives are
 // de-indexed. Degenerate or non-finite triangles get +Z (they draw no pixels anyway).
-void make_flat_normals(MeshPrimitive& primitive) {
+void make_flat_normals(const LoadContext& context, const std::string& where,
+                       MeshPrimitive& primitive) {
+  const uint64_t bytes_per_corner = sizeof(glm::vec3) * 2 + sizeof(uint32_t) +
+                                    (primitive.uv0.empty() ? 0 : sizeof(glm::vec2)) +
+                                    (primitive.colors.empty() ? 0 : sizeof(glm::vec4));
+  charge_geometry_bytes(context, primitive.indices.size() * bytes_per_corner,
+                        where + " flat normals (one vertex per triangle corner)");
   MeshPrimitive flat;
   flat.material = primitive.material;
   const size_t corner_count = primitive.indices.size();
@@ -178,6 +186,11 @@ MeshPrimitive convert_triangles(const LoadContext& context, int mesh_index, size
 
   std::vector<uint32_t> sequence;
   if (source.indices >= 0) {
+    if (static_cast<size_t>(source.indices) < context.model.accessors.size()) {
+      const auto& index_accessor = context.model.accessors[static_cast<size_t>(source.indices)];
+      charge_geometry_bytes(context, uint64_t{index_accessor.count} * sizeof(uint32_t),
+                            where + " indices");
+    }
     sequence = read_accessor_indices(context.model, source.indices, context.file_label);
     for (uint32_t index : sequence) {
       if (index >= vertex_count) {
@@ -187,6 +200,7 @@ MeshPrimitive convert_triangles(const LoadContext& context, int mesh_index, size
       }
     }
   } else {
+    charge_geometry_bytes(context, vertex_count * sizeof(uint32_t), where + " generated indices");
     sequence.resize(vertex_count);
     for (size_t v = 0; v < vertex_count; ++v) sequence[v] = static_cast<uint32_t>(v);
   }
@@ -195,10 +209,14 @@ MeshPrimitive convert_triangles(const LoadContext& context, int mesh_index, size
                                      " vertices is not a multiple of 3; the last " +
                                      std::to_string(sequence.size() % 3) + " ignored");
   }
+  if (source.mode != TINYGLTF_MODE_TRIANGLES) {
+    charge_geometry_bytes(context, 3 * sequence.size() * sizeof(uint32_t),
+                          where + " strip or fan as a triangle list");
+  }
   primitive.indices = triangle_list(source.mode, sequence);
 
   if (primitive.normals.empty()) {
-    make_flat_normals(primitive);
+    make_flat_normals(context, where, primitive);
     ++context.stats.primitives_with_generated_normals;
   }
   return primitive;

@@ -59,7 +59,7 @@ Camera default_camera(const Scene& scene) {
   world[1] = glm::dvec4(up, 0.0);
   world[2] = glm::dvec4(back, 0.0);
   world[3] = glm::dvec4(eye, 1.0);
-  camera.world = glm::mat4(world);
+  camera.world = world;
   return camera;
 }
 

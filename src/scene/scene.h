@@ -72,11 +72,15 @@ struct Material {
 };
 
 // A mesh placed in the world by the default scene's node tree (hierarchy flattened).
+// Transforms are double: composed from the file's values without a float rounding, so a node
+// 1e6 units from the origin keeps its position to ~1e-10 units instead of float's 1/16 unit;
+// renderers fold them into a camera-relative model-view-projection before going to float
+// (docs/stability.md, "Far from the origin through glTF").
 struct MeshInstance {
   int mesh = -1;
-  glm::mat4 world{1.0f};
+  glm::dmat4 world{1.0};  // object-to-world
   std::string node_name;
-  Bounds world_bounds;
+  Bounds world_bounds;  // float: a culling and framing aid, not used to place vertices
 };
 
 struct Camera {
@@ -87,7 +91,7 @@ struct Camera {
   float xmag = 1.0f, ymag = 1.0f;  // orthographic half extents
   float znear = 0.1f;
   float zfar = 0.0f;           // 0: infinite (perspective only)
-  glm::mat4 world{1.0f};       // camera-to-world; the camera looks down its local -Z, +Y up
+  glm::dmat4 world{1.0};       // camera-to-world (rigid); looks down its local -Z, +Y up
 };
 
 // KHR_lights_punctual.

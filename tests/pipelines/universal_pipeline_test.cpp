@@ -204,8 +204,8 @@ struct ShadowScene {
       instance.mesh = mesh;
       instance.world = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, mesh == 1 ? 2.0f : 0.0f, 0.0f));
       const Bounds& b = scene.meshes[mesh].primitives[0].bounds;
-      instance.world_bounds.extend(glm::vec3(instance.world * glm::vec4(b.min, 1.0f)));
-      instance.world_bounds.extend(glm::vec3(instance.world * glm::vec4(b.max, 1.0f)));
+      instance.world_bounds.extend(glm::vec3(glm::mat4(instance.world) * glm::vec4(b.min, 1.0f)));
+      instance.world_bounds.extend(glm::vec3(glm::mat4(instance.world) * glm::vec4(b.max, 1.0f)));
       scene.world_bounds.extend(instance.world_bounds);
       scene.instances.push_back(instance);
     }

@@ -158,8 +158,8 @@ TEST(GltfGeometry, DefaultCameraOfAnEmptySceneFramesTheUnitSphere) {
   // Radius 1 at the origin: distance 1 / sin(22.5 deg), raised 15 degrees.
   const double distance = 1.0 / std::sin(22.5 * std::numbers::pi / 180.0);
   const double elevation = 15.0 * std::numbers::pi / 180.0;
-  EXPECT_EQ(glm::vec3(camera.world[3]), glm::vec3(glm::dvec3(0.0, distance * std::sin(elevation),
-                                                             distance * std::cos(elevation))));
+  EXPECT_EQ(glm::dvec3(camera.world[3]),
+            glm::dvec3(0.0, distance * std::sin(elevation), distance * std::cos(elevation)));
   EXPECT_EQ(camera.znear, static_cast<float>(distance - 1.1));
   EXPECT_EQ(camera.zfar, static_cast<float>(distance + 1.1));
   EXPECT_EQ(camera.type, Camera::Type::Perspective);
@@ -268,8 +268,8 @@ TEST(GltfGeometry, NodeTrsAndMatrixComposeParentTimesChild) {
   const MeshInstance& child = scene.instances[1];
   EXPECT_EQ(child.node_name, "child");
   // (1,0,1) -> child (1,1,3) -> scale (2,2,6) -> rotate (-2,-2,6) -> translate (-1,0,9).
-  EXPECT_EQ(glm::vec3(child.world * glm::vec4(1, 0, 1, 1)), glm::vec3(-1, 0, 9));
-  EXPECT_EQ(glm::vec3(scene.instances[0].world * glm::vec4(1, 0, 1, 1)), glm::vec3(-1, 2, 5));
+  EXPECT_EQ(glm::dvec3(child.world * glm::dvec4(1, 0, 1, 1)), glm::dvec3(-1, 0, 9));
+  EXPECT_EQ(glm::dvec3(scene.instances[0].world * glm::dvec4(1, 0, 1, 1)), glm::dvec3(-1, 2, 5));
   // Object bounds [0,1]x[0,1]x[0,1] through the child's world: x in [-1,1], y in [-2,0],
   // z in [3,9].
   EXPECT_EQ(child.world_bounds.min, glm::vec3(-1, -2, 3));
@@ -337,8 +337,8 @@ TEST(GltfGeometry, CamerasAndLightsFromNodes) {
   EXPECT_EQ(persp.zfar, 0.0f);          // absent: infinite
   EXPECT_EQ(persp.aspect_ratio, 0.0f);  // absent: image aspect
   // Scale dropped: rotation about Y by 180 degrees and the translation remain.
-  EXPECT_EQ(persp.world, glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
-                                   glm::vec4(0, 0, -1, 0), glm::vec4(1, 2, 3, 1)));
+  EXPECT_EQ(persp.world, glm::dmat4(glm::dvec4(-1, 0, 0, 0), glm::dvec4(0, 1, 0, 0),
+                                    glm::dvec4(0, 0, -1, 0), glm::dvec4(1, 2, 3, 1)));
   const Camera& ortho = scene.cameras[1];
   EXPECT_EQ(ortho.type, Camera::Type::Orthographic);
   EXPECT_EQ(ortho.xmag, 2.0f);

@@ -25,7 +25,7 @@ std::filesystem::path asset(const std::string& relative) {
   if (!std::filesystem::is_directory(ONTILE_SHARED_ASSETS)) \
   GTEST_SKIP() << "shared assets not found at " << ONTILE_SHARED_ASSETS
 
-bool all_finite(const glm::mat4& m) {
+bool all_finite(const glm::dmat4& m) {
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(m[c][r])) return false;
@@ -33,11 +33,11 @@ bool all_finite(const glm::mat4& m) {
 }
 
 // Camera frames must be rigid: unit, mutually orthogonal axes.
-void expect_rigid(const glm::mat4& m) {
-  for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(glm::length(glm::vec3(m[axis])), 1.0f, 1e-5f);
-  EXPECT_NEAR(glm::dot(glm::vec3(m[0]), glm::vec3(m[1])), 0.0f, 1e-5f);
-  EXPECT_NEAR(glm::dot(glm::vec3(m[1]), glm::vec3(m[2])), 0.0f, 1e-5f);
-  EXPECT_NEAR(glm::determinant(glm::mat3(m)), 1.0f, 1e-5f);
+void expect_rigid(const glm::dmat4& m) {
+  for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(glm::length(glm::dvec3(m[axis])), 1.0, 1e-12);
+  EXPECT_NEAR(glm::dot(glm::dvec3(m[0]), glm::dvec3(m[1])), 0.0, 1e-12);
+  EXPECT_NEAR(glm::dot(glm::dvec3(m[1]), glm::dvec3(m[2])), 0.0, 1e-12);
+  EXPECT_NEAR(glm::determinant(glm::dmat3(m)), 1.0, 1e-12);
 }
 
 TEST(GltfAssets, EveryModelLoadsWithReadmeDrawnTriangleCount) {
@@ -155,7 +155,7 @@ TEST(GltfAssets, OrientationTestMatrixNodesKeepTheirMatrix) {
     ASSERT_NE(instance, nullptr) << node["name"];
     // These nodes are scene roots, so the world matrix is the node's matrix.
     for (int k = 0; k < 16; ++k) {
-      EXPECT_EQ(instance->world[k / 4][k % 4], static_cast<float>(node["matrix"][k].get<double>()));
+      EXPECT_EQ(instance->world[k / 4][k % 4], node["matrix"][k].get<double>());
     }
   }
   EXPECT_EQ(matrix_nodes, 3);
