@@ -13,6 +13,7 @@ namespace {
 
 struct AccuracyOptions {
   std::string scene, json, size = "1280x720", pipeline = "lambert";
+  bool allow_outside_files = false;
   int camera = -1, threads = 0;
 };
 
@@ -26,7 +27,7 @@ void run_accuracy(const AccuracyOptions& o) {
     throw UsageError("--pipeline '" + o.pipeline + "': accuracy has a reference only for 'lambert'");
   }
   if (!o.json.empty()) check_output_option("--json", o.json, true);
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   const AccuracyRun run = measure_accuracy(scene, settings);
   RunOutputs outputs;
   if (!o.json.empty()) {
@@ -47,7 +48,7 @@ void run_accuracy(const AccuracyOptions& o) {
 void add_accuracy_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("accuracy", "Compare the rasterizer with the ray-traced reference");
   auto o = std::make_shared<AccuracyOptions>();
-  cmd->add_option("--scene", o->scene, "glTF scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene (.gltf or .glb)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 1280x720)");
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));

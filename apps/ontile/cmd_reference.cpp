@@ -14,6 +14,7 @@ namespace {
 
 struct ReferenceOptions {
   std::string scene, out, size = "1280x720";
+  bool allow_outside_files = false;
   int camera = -1, spp = 1;
 };
 
@@ -31,7 +32,7 @@ void run_reference(const ReferenceOptions& o) {
                      "' (the reference writes .exr: R, G, B, A, Z, primid, N.x, N.y, N.z)");
   }
   check_output_option("--out", o.out, false);
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   const Camera camera = select_camera(scene, o.camera);
   const LambertReferenceScene ref = make_lambert_reference_scene(scene, camera, width_px, height_px);
   const ReferenceImage image = render_reference(ref, width_px, height_px, o.spp);
@@ -46,7 +47,7 @@ void run_reference(const ReferenceOptions& o) {
 void add_reference_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("reference", "Ray-trace the lambert pipeline's reference image (Embree) with AOVs");
   auto o = std::make_shared<ReferenceOptions>();
-  cmd->add_option("--scene", o->scene, "glTF scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene (.gltf or .glb)");
   cmd->add_option("--out", o->out, "Output EXR (R, G, B, A, Z, primid, N.x, N.y, N.z)")->required();
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));

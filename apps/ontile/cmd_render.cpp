@@ -21,6 +21,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights;
+  bool allow_outside_files = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
@@ -78,7 +79,7 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
 // --set msaa=N, each pixel's sample 0: aov_pass.h).
 void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
   const AovKind kind = *parse_aov_kind(o.aov);
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::vector<double> ms;
   const AovFrame frame =
       render_timed(o.frames.value_or(0), ms, [&] { return render_aov_frame(scene, settings, {kind}); });
@@ -181,7 +182,7 @@ void run_render(const RenderOptions& o) {
     run_aov_render(o, settings, outputs);
     return;
   }
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::vector<double> ms;
   const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, [&] { return render_frame(scene, settings); });
   const FrameReport& report = frame.outputs.report;
@@ -199,7 +200,7 @@ void run_render(const RenderOptions& o) {
 void add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a glTF scene and report its memory traffic");
   auto o = std::make_shared<RenderOptions>();
-  cmd->add_option("--scene", o->scene, "glTF scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene (.gltf or .glb)");
   cmd->add_option("--out", o->out, "Output image (.png or .exr)")->required();
   cmd->add_option("--pipeline", o->pipeline, "Render pipeline (see `ontile pipelines`)");
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")

@@ -14,6 +14,7 @@ namespace {
 
 struct StudyOptions {
   std::string scene, size = "2220x1080", markdown;
+  bool allow_outside_files = false;
   StudySettings settings;
 };
 
@@ -21,7 +22,7 @@ void run_deferred_study(const StudyOptions& o) {
   StudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
   if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
   const std::string md = deferred_study_markdown(rows, s, std::filesystem::path(o.scene).filename().string());
@@ -40,7 +41,7 @@ void add_study_command(CLI::App& app) {
   auto o = std::make_shared<StudyOptions>();
   CLI::App* cmd = study->add_subcommand(
       "deferred", "Classic vs subpass deferred, transient attachments, G-buffer size, MSAA resolve (docs/deferred.md)");
-  cmd->add_option("--scene", o->scene, "glTF scene (the docs use the generated atrium)")->required()->check(CLI::ExistingFile);
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene (the docs use the generated atrium)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 2220x1080, the sample's device)");
   cmd->add_option("--tile", o->settings.tile_size_px, "Tile size in pixels (default 16)")->check(CLI::IsMember({8, 16, 32}));
   cmd->add_option("--budget", o->settings.color_budget_bits_per_px, "Colour budget in bits per pixel (default 128)")

@@ -19,6 +19,7 @@ namespace {
 
 struct SweepOptions {
   std::string scene, csv, plot, size = "640x360";
+  bool allow_outside_files = false;
   int camera = -1, frames = 5, threads = 0, spp = 64;
 };
 
@@ -61,7 +62,7 @@ void run_sweep_command(const SweepOptions& o) {
   // With --csv -, standard output is the CSV alone; the progress goes to standard error.
   std::FILE* summary = summary_stream(is_stdout(o.csv));
   keep_freed_memory_in_the_heap();
-  const Scene scene = load_gltf(o.scene);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::fprintf(summary, "%s: %dx%d, %d frames per setting, reference %d spp\n", o.scene.c_str(), config.width_px,
                config.height_px, config.frames, config.reference_spp);
   const SweepResult result =
@@ -89,7 +90,7 @@ void run_sweep_command(const SweepOptions& o) {
 void add_sweep_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("sweep", "Time against error: lambert settings vs a ray-traced reference (CSV + plot)");
   auto o = std::make_shared<SweepOptions>();
-  cmd->add_option("--scene", o->scene, "glTF scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene (.gltf or .glb)");
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 640x360)");
   cmd->add_option("--camera", o->camera, "Camera index in the scene (default: first camera, or a framing camera)")
       ->check(CLI::Range(0, 1 << 20));

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
 
@@ -44,6 +45,13 @@ int max_image_side_px();
 // Parses "WxH" (e.g. 1920x1080): decimal digits only, each side 1..max_image_side_px(), checked
 // before any conversion can overflow. Throws UsageError naming `option` otherwise.
 void parse_size(const std::string& text, int& width_px, int& height_px, const char* option = "--size");
+
+// --scene FILE (required, must exist) and --allow-outside-files: by default the loader refuses
+// buffer and image URIs that leave the scene file's folder (docs/robustness.md).
+void add_scene_options(CLI::App* cmd, std::string& scene, bool& allow_outside_files,
+                       const std::string& description);
+// Loads the glTF scene with the loader options the verb's flags chose.
+Scene load_scene(const std::string& scene, bool allow_outside_files);
 
 // "-" as a report path means standard output.
 inline bool is_stdout(const std::string& path) { return path == "-"; }

@@ -105,6 +105,99 @@ void DecodeRgb10a2Kernel(const uint8_t* src, int pixels, float* rgba) {
   }
 }
 
+// binary16 (Vulkan "16-bit floating-point numbers") on 32-bit lanes, operation for operation as
+// pixel_format.cpp's encode_small_float<10, true> / decode_small_float<10, true>: integer
+// rebiasing with round to nearest even, subnormals through an exact scaling and one float
+// round-to-integer, NaN payloads kept (never Inf). Returns / takes the code in the low 16 bits.
+template <class DI>
+hn::Vec<DI> half_code(DI di, hn::Vec<DI> f) {
+  const hn::Rebind<float, DI> df;
+  const auto sign = hn::ShiftLeft<15>(hn::ShiftRight<31>(hn::BitCast(hn::RebindToUnsigned<DI>(), f)));
+  const auto magnitude = hn::And(f, hn::Set(di, 0x7FFFFFFF));
+  const auto exponent_all_ones = hn::Set(di, 0x7C00);
+  auto payload = hn::And(hn::ShiftRight<13>(magnitude), hn::Set(di, 0x3FF));
+  payload = hn::IfThenElse(hn::Eq(payload, hn::Zero(di)), hn::Set(di, 0x200), payload);
+  const auto nan_code = hn::Or(exponent_all_ones, payload);
+  const auto scaled = hn::Mul(hn::BitCast(df, magnitude), hn::Set(df, 16777216.0f));  // 2^(14+10)
+  const auto rounded_float =
+      hn::Sub(hn::Add(scaled, hn::Set(df, 8388608.0f)), hn::Set(df, 8388608.0f));
+  const auto subnormal_code = hn::ConvertTo(di, rounded_float);
+  const auto rebased = hn::Sub(magnitude, hn::Set(di, 112 << 23));
+  const auto rounded = hn::Add(hn::Add(rebased, hn::Set(di, 0xFFF)),
+                               hn::And(hn::ShiftRight<13>(rebased), hn::Set(di, 1)));
+  const auto code = hn::ShiftRight<13>(rounded);
+  const auto normal_code = hn::IfThenElse(hn::Gt(code, hn::Set(di, 0x7BFF)), exponent_all_ones, code);
+  auto result = hn::IfThenElse(hn::Lt(magnitude, hn::Set(di, 0x38800000)), subnormal_code, normal_code);
+  result = hn::IfThenElse(hn::Eq(magnitude, hn::Set(di, 0x7F800000)), exponent_all_ones, result);
+  result = hn::IfThenElse(hn::Gt(magnitude, hn::Set(di, 0x7F800000)), nan_code, result);
+  return hn::Or(hn::BitCast(di, sign), result);
+}
+
+template <class DI>
+hn::Vec<DI> half_value_bits(DI di, hn::Vec<DI> code) {
+  const hn::Rebind<float, DI> df;
+  const auto sign = hn::ShiftLeft<16>(hn::And(code, hn::Set(di, 0x8000)));
+  const auto exponent = hn::And(hn::ShiftRight<10>(code), hn::Set(di, 0x1F));
+  const auto mantissa = hn::And(code, hn::Set(di, 0x3FF));
+  const auto inf_nan = hn::Or(hn::Set(di, 0x7F800000), hn::ShiftLeft<13>(mantissa));
+  const auto subnormal =
+      hn::BitCast(di, hn::Mul(hn::ConvertTo(df, mantissa), hn::Set(df, 1.0f / 16777216.0f)));
+  const auto normal = hn::Or(hn::ShiftLeft<23>(hn::Add(exponent, hn::Set(di, 112))),
+                             hn::ShiftLeft<13>(mantissa));
+  auto result = hn::IfThenElse(hn::Eq(exponent, hn::Zero(di)), subnormal, normal);
+  result = hn::IfThenElse(hn::Eq(exponent, hn::Set(di, 31)), inf_nan, result);
+  return hn::Or(sign, result);
+}
+
+void QuantizeHalfKernel(float* values, int count) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const size_t n = hn::Lanes(df);
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    values[i] = half_bits_to_float(float_to_half_bits(values[i]));
+  }
+}
+
+void EncodeHalfKernel(const float* values, int count, uint8_t* dst) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const size_t n = hn::Lanes(df);
+  alignas(64) int32_t codes[64];
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count) && n <= 64; i += n) {
+    hn::Store(half_code(di, hn::BitCast(di, hn::LoadU(df, values + i))), di, codes);
+    for (size_t k = 0; k < n; ++k) {
+      dst[2 * (i + k)] = static_cast<uint8_t>(codes[k]);
+      dst[2 * (i + k) + 1] = static_cast<uint8_t>(codes[k] >> 8);
+    }
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    const uint16_t code = float_to_half_bits(values[i]);
+    dst[2 * i] = static_cast<uint8_t>(code);
+    dst[2 * i + 1] = static_cast<uint8_t>(code >> 8);
+  }
+}
+
+void DecodeHalfKernel(const uint8_t* src, int count, float* values) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const size_t n = hn::Lanes(df);
+  alignas(64) int32_t codes[64];
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count) && n <= 64; i += n) {
+    for (size_t k = 0; k < n; ++k) codes[k] = src[2 * (i + k)] | (src[2 * (i + k) + 1] << 8);
+    hn::StoreU(hn::BitCast(df, half_value_bits(di, hn::Load(di, codes))), df, values + i);
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    values[i] = half_bits_to_float(static_cast<uint16_t>(src[2 * i] | (src[2 * i + 1] << 8)));
+  }
+}
+
 void QuantizeUnormKernel(float* values, int count, int bits) {
   const hn::ScalableTag<double> dd;
   const hn::Rebind<float, decltype(dd)> df;
@@ -207,6 +300,9 @@ HWY_EXPORT(QuantizeSrgb8Kernel);
 HWY_EXPORT(EncodeSrgb8Kernel);
 HWY_EXPORT(DecodeTable8Kernel);
 HWY_EXPORT(EncodeRgb10a2Kernel);
+HWY_EXPORT(QuantizeHalfKernel);
+HWY_EXPORT(EncodeHalfKernel);
+HWY_EXPORT(DecodeHalfKernel);
 HWY_EXPORT(DecodeRgb10a2Kernel);
 
 void quantize_unorm_simd(float* values, int count, int bits) {
@@ -223,6 +319,15 @@ void encode_srgb8_simd(const float* values, int count, uint8_t* dst) {
 }
 void decode_table8_simd(const uint8_t* src, int count, const float* table, float* dst) {
   HWY_DYNAMIC_DISPATCH(DecodeTable8Kernel)(src, count, table, dst);
+}
+void quantize_half_simd(float* values, int count) {
+  HWY_DYNAMIC_DISPATCH(QuantizeHalfKernel)(values, count);
+}
+void encode_half_simd(const float* values, int count, uint8_t* dst) {
+  HWY_DYNAMIC_DISPATCH(EncodeHalfKernel)(values, count, dst);
+}
+void decode_half_simd(const uint8_t* src, int count, float* values) {
+  HWY_DYNAMIC_DISPATCH(DecodeHalfKernel)(src, count, values);
 }
 void encode_rgb10a2_simd(const float* rgba, int pixels, uint8_t* dst) {
   HWY_DYNAMIC_DISPATCH(EncodeRgb10a2Kernel)(rgba, pixels, dst);

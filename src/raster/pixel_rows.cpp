@@ -28,6 +28,12 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
     }
     case PixelFormat::RGBA32_FLOAT:
       return;
+    case PixelFormat::RGBA16_FLOAT:
+      quantize_half_simd(r, count);
+      quantize_half_simd(g, count);
+      quantize_half_simd(b, count);
+      quantize_half_simd(a, count);
+      return;
     default:
       for (int i = 0; i < count; ++i) {
         const glm::vec4 q = quantize_pixel(format, {r[i], g[i], b[i], a[i]});
@@ -58,6 +64,9 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
     case PixelFormat::RGB10A2_UNORM:
       encode_rgb10a2_simd(values, count, dst);
       return;
+    case PixelFormat::RGBA16_FLOAT:
+      encode_half_simd(values, 4 * count, dst);
+      return;
     case PixelFormat::R32_FLOAT:
     case PixelFormat::D32_FLOAT:
       for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &src[i].x, 4);
@@ -86,6 +95,9 @@ void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4*
       return;
     case PixelFormat::RGB10A2_UNORM:
       decode_rgb10a2_simd(src, count, values);
+      return;
+    case PixelFormat::RGBA16_FLOAT:
+      decode_half_simd(src, 4 * count, values);
       return;
     case PixelFormat::R32_FLOAT:
     case PixelFormat::D32_FLOAT:

@@ -167,4 +167,37 @@ TEST_F(CliOutputs, ImmediateModePrintsNoTiles) {
   EXPECT_NE(tbdr.out.find(" tiles,"), std::string::npos) << tbdr.out;
 }
 
+// A scene whose buffer lies one folder up: refused by default (exit 2, one error line naming the
+// URI), rendered with --allow-outside-files.
+TEST_F(CliOutputs, FilesOutsideTheSceneFolderNeedAnExplicitFlag) {
+  const fs::path scene_dir = scratch_ / "scene";
+  fs::create_directories(scene_dir);
+  // One triangle: 3 float3 positions (36 bytes), little-endian.
+  const float positions[9] = {-1.0f, -1.0f, 0.0f, 1.0f, -1.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+  {
+    std::ofstream bin(scratch_ / "triangle.bin", std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(positions), sizeof(positions));
+  }
+  {
+    std::ofstream gltf(scene_dir / "triangle.gltf");
+    gltf << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+         << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+         << R"("buffers":[{"uri":"../triangle.bin","byteLength":36}],)"
+         << R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+         << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3",)"
+         << R"("min":[-1,-1,0],"max":[1,1,0]}]})";
+  }
+  const std::string args = "render --scene " + (scene_dir / "triangle.gltf").string() +
+                           " --size 32x32 --out " + (dir_ / "t.png").string();
+  const SplitRun refused = run(args);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+  EXPECT_EQ(refused.err.rfind("error: ", 0), 0u) << refused.err;
+  EXPECT_NE(refused.err.find("../triangle.bin"), std::string::npos) << refused.err;
+  EXPECT_TRUE(entries().empty());
+  const SplitRun allowed = run(args + " --allow-outside-files");
+  EXPECT_EQ(allowed.exit_code, 0) << allowed.err;
+  EXPECT_EQ(entries(), std::vector<std::string>{"t.png"});
+}
+
 }  // namespace

@@ -47,6 +47,25 @@ std::vector<float> test_values() {
       for (int k = 0; k < 5; ++k, y = std::nextafter(y, 2.0f)) v.push_back(y);
     }
   }
+  // binary16 rounding: for exponents across the normal and subnormal range, the dropped 13
+  // bits just below, at and above the tie, with even and odd kept mantissas, both signs; the
+  // overflow threshold; NaNs whose payload lies only in the dropped bits.
+  for (uint32_t exponent = 96; exponent <= 143; ++exponent) {
+    for (const uint32_t kept : {0u, 1u, 2u, 0x3FEu, 0x3FFu}) {
+      for (const uint32_t dropped : {0x0FFFu, 0x1000u, 0x1001u, 0x1FFFu}) {
+        for (const uint32_t sign : {0u, 0x80000000u}) {
+          v.push_back(std::bit_cast<float>(sign | (exponent << 23) | (kept << 13) | dropped));
+        }
+      }
+    }
+  }
+  for (const float x : {65504.0f, 65519.99f, 65520.0f, 65536.0f, 5.9604645e-8f, 2.9802322e-8f,
+                        8.940697e-8f, 6.1035156e-5f, 6.1035152e-5f}) {
+    v.push_back(x);
+    v.push_back(-x);
+  }
+  v.push_back(std::bit_cast<float>(0x7F800001u));
+  v.push_back(std::bit_cast<float>(0xFFC00001u));
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
   for (int i = 0; i < 20000; ++i) v.push_back(unit(rng));
