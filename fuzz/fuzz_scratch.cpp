@@ -25,7 +25,8 @@ void write_bytes(const std::filesystem::path& path, const void* data, size_t siz
   }
 }
 
-// Bytes 0-63: 16 floats (a triangle's three positions, a normal, two texture coordinates);
+// Bytes 0-63: 16 floats (a triangle's three positions, then values read as a normal or as
+// texture coordinates);
 // 64-83: ten uint16 indices; 96-119: six uint32 indices; the rest zero. Seeds point accessors
 // of several component types into it.
 std::vector<uint8_t> external_buffer() {
