@@ -21,7 +21,7 @@ bash scripts/configure_sanitized.sh "$build" -g1 -DONTILE_SANITIZERS=address,und
 cmake --build "$build" -j "$(nproc)" --target ontile "${targets[@]}"
 
 # Seeds: the hand-written text seeds of fuzz/corpus/, the bundled scene, the generator's
-# scenes (a small atrium), JSON-only GLB copies of the .gltf seeds, a GLB with a BIN chunk
+# scenes (the smallest atrium, 2 MB: -max_len below keeps it whole), JSON-only GLB copies of the .gltf seeds, a GLB with a BIN chunk
 # from fuzz/corpus/glb/, and the third-party .glb models of ../shared/assets when present.
 seeds="$build/fuzz/seeds"
 rm -rf "$seeds"
@@ -75,7 +75,7 @@ for target in "${targets[@]}"; do
   status=0
   "$build/fuzz/$target" "$corpus" "$seeds/${seed_folder[$target]}" \
     -dict="${dictionary[$target]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -malloc_limit_mb=2048 -max_len=1048576 -print_final_stats=1 \
+    -malloc_limit_mb=2048 -max_len=3145728 -print_final_stats=1 \
     -artifact_prefix="$build/fuzz/artifacts/$target-" > "$log" 2>&1 || status=$?
   if [ "$status" -ne 0 ]; then
     tail -n 150 "$log"

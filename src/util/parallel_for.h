@@ -25,20 +25,21 @@ namespace ontile {
 #ifdef ONTILE_THREAD_SANITIZER
 namespace parallel_detail {
 
-// One loop's synchronisation objects for TSan (only their addresses matter): the caller
-// releases `fork` before the loop and acquires `join` after it; every body acquires `fork`
-// first and releases `join` last.
-struct ForkJoinEdges {
-  char fork = 0;
-  char join = 0;
-};
+// The synchronisation objects TSan sees (only their addresses matter): the caller releases
+// `fork_token` before a loop and acquires `join_token` after it; every body acquires
+// `fork_token` first and releases `join_token` last. They are global rather than per loop
+// because a body must acquire before it reads anything the caller wrote, its own captures
+// included. The cost: two loops started at the same time by different threads would look
+// ordered to TSan; ontile starts its loops from one thread per frame.
+inline char fork_token = 0;
+inline char join_token = 0;
 
 template <typename Body>
-auto with_fork_join_edges(ForkJoinEdges* edges, const Body& body) {
-  return [edges, &body](const auto& index_or_range) {
-    __tsan_acquire(&edges->fork);
+auto with_fork_join_edges(const Body& body) {
+  return [&body](const auto& index_or_range) {
+    __tsan_acquire(&fork_token);
     body(index_or_range);
-    __tsan_release(&edges->join);
+    __tsan_release(&join_token);
   };
 }
 
@@ -49,10 +50,9 @@ auto with_fork_join_edges(ForkJoinEdges* edges, const Body& body) {
 template <typename Range, typename Body>
 void parallel_for(const Range& range, const Body& body) {
 #ifdef ONTILE_THREAD_SANITIZER
-  parallel_detail::ForkJoinEdges edges;
-  __tsan_release(&edges.fork);
-  tbb::parallel_for(range, parallel_detail::with_fork_join_edges(&edges, body));
-  __tsan_acquire(&edges.join);
+  __tsan_release(&parallel_detail::fork_token);
+  tbb::parallel_for(range, parallel_detail::with_fork_join_edges(body));
+  __tsan_acquire(&parallel_detail::join_token);
 #else
   tbb::parallel_for(range, body);
 #endif
@@ -62,10 +62,9 @@ void parallel_for(const Range& range, const Body& body) {
 template <typename Index, typename Body>
 void parallel_for(Index first, Index last, const Body& body) {
 #ifdef ONTILE_THREAD_SANITIZER
-  parallel_detail::ForkJoinEdges edges;
-  __tsan_release(&edges.fork);
-  tbb::parallel_for(first, last, parallel_detail::with_fork_join_edges(&edges, body));
-  __tsan_acquire(&edges.join);
+  __tsan_release(&parallel_detail::fork_token);
+  tbb::parallel_for(first, last, parallel_detail::with_fork_join_edges(body));
+  __tsan_acquire(&parallel_detail::join_token);
 #else
   tbb::parallel_for(first, last, body);
 #endif
