@@ -22,7 +22,12 @@ for job in "${jobs[@]}"; do
     asan)
       bash scripts/configure_sanitized.sh build-asan -g1 -DONTILE_SANITIZERS=address,undefined -DONTILE_BUILD_FUZZERS=ON
       cmake --build build-asan -j "$parallel" --target ontile_tests
-      (cd build-asan && ctest --output-on-failure -j "$parallel" ${CTEST_ARGS:-})
+      # Not run here (scripts/test.sh runs them): the llvmpipe peer's runner dlopens Mesa's
+      # llvmpipe driver (Debian 12: Mesa 22.3), which leaks 240 bytes in 3 allocations and is
+      # unloaded before LeakSanitizer reports, so the leak has no module or function name that
+      # a suppression could match.
+      excluded='LlvmpipeCartoonPeer\.LlvmpipeDrawsTheSameFrame'
+      (cd build-asan && ctest --output-on-failure -j "$parallel" -E "$excluded" ${CTEST_ARGS:-})
       ;;
     tsan)
       bash scripts/configure_sanitized.sh build-tsan -g -DONTILE_SANITIZERS=thread
