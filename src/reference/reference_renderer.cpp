@@ -8,10 +8,10 @@
 #include <limits>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "io/image_io.h"
 #include "util/error.h"
+#include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
@@ -161,7 +161,7 @@ ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, 
   // Sample s of the k x k grid sits at ((i + 0.5) / k, (j + 0.5) / k); for odd k the middle
   // one is the pixel centre and gives the AOVs, for even k an extra centre ray does.
   const bool centre_in_grid = grid % 2 == 1;
-  tbb::parallel_for(tbb::blocked_range<int>(0, quad_rows), [&](const tbb::blocked_range<int>& rows) {
+  ontile::parallel_for(tbb::blocked_range<int>(0, quad_rows), [&](const tbb::blocked_range<int>& rows) {
     std::vector<RayCandidate> hits[kQuadLanes];
     LaneResult result[kQuadLanes];
     for (int row = rows.begin(); row < rows.end(); ++row) {

@@ -4,12 +4,11 @@
 #include <atomic>
 #include <bit>
 
-#include <tbb/parallel_for.h>
-
 #include "raster/clip.h"
 #include "tiler/parameter_buffer.h"
 #include "tiler/vertex_stage.h"
 #include "util/error.h"
+#include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
@@ -253,7 +252,7 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
                            inputs[i].triangle_count, pb.chunks[i].triangles,
                            pb.chunks[i].varyings, {}, {}, 0, {}});
   }
-  tbb::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
+  ontile::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
     Chunk& c = chunks[i];
     process_chunk(pass.subpasses[c.subpass].draws[c.draw], shaded[c.subpass][c.draw], grid, guard,
                   c);

@@ -6,13 +6,13 @@
 
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "raster/sample_pattern.h"
 #include "tiler/parameter_buffer.h"
 #include "tiler/tile_executor.h"
 #include "tiler/trace_buffers.h"
 #include "util/error.h"
+#include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
@@ -207,7 +207,7 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   const bool imr = config.architecture == Architecture::Imr;
   const TraceBuffersLease texel_buffers;
   std::vector<TileTrace> traces(grid.tile_count());
-  tbb::parallel_for(0, grid.tile_count(), [&](int tile) {
+  ontile::parallel_for(0, grid.tile_count(), [&](int tile) {
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
     execute_tile(pass, params, tile, memory, counters.local(), traces[tile],

@@ -8,10 +8,10 @@
 #include <span>
 #include <vector>
 
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include "tiler/texture_cache.h"
+#include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
@@ -134,7 +134,7 @@ TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<Tile
   const int tiles = static_cast<int>(traces.size());
   // 1. Placement: distinct ids per tile in parallel, then placed in tile order.
   std::vector<std::vector<uint64_t>> tile_ids(tiles);
-  tbb::parallel_for(0, tiles, [&](int t) {
+  ontile::parallel_for(0, tiles, [&](int t) {
     tile_ids[t] = ids_in_first_use_order(traces[t].texture_granules.granules());
   });
   for (const auto& ids : tile_ids) {
@@ -145,7 +145,7 @@ TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<Tile
   for (uint32_t set = 0; set < cache.set_count(); ++set) group_of_set[set] = set % groups;
   std::vector<TextureTraffic> partial(groups);
   const TextureCache::Lookup lookup = cache.lookup();
-  tbb::parallel_for(uint32_t{0}, groups, [&](uint32_t group) {
+  ontile::parallel_for(uint32_t{0}, groups, [&](uint32_t group) {
     partial[group] = power_of_two_sets
                          ? replay_group<true>(cache, lookup, traces, group_of_set, group)
                          : replay_group<false>(cache, lookup, traces, group_of_set, group);

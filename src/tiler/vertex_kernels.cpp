@@ -91,9 +91,15 @@ void ClassifySnapKernel(const float* xyzw, uint32_t count, const float* guard_xy
     const auto ndc_y = hn::Mul(hn::PromoteTo(dd, vy), inv);
     const auto sx = hn::Mul(hn::Add(hn::Mul(ndc_x, half), half), width);
     const auto sy = hn::Mul(hn::Sub(half, hn::Mul(ndc_y, half)), height);
-    hn::Store(hn::DemoteTo(di, hn::Mul(round_half_away(hn::Mul(sx, snap_scale)), grid_step)), di,
+    // NaN (a non-finite vertex, flagged above and dropped later) becomes 2^31 - 1 before the
+    // conversion to int32, as on Highway's x86 targets, whose clamp (MINPD) returns the bound
+    // for NaN. Its scalar EMU128 target would cast NaN to int, which is undefined behaviour
+    // (found by UBSan, docs/robustness.md); the x86 results do not change.
+    const auto int32_max = hn::Set(dd, 2147483647.0);
+    const auto fixed_point = [&](auto v) { return hn::IfThenElse(hn::IsNaN(v), int32_max, v); };
+    hn::Store(hn::DemoteTo(di, fixed_point(hn::Mul(round_half_away(hn::Mul(sx, snap_scale)), grid_step))), di,
               x_fp);
-    hn::Store(hn::DemoteTo(di, hn::Mul(round_half_away(hn::Mul(sy, snap_scale)), grid_step)), di,
+    hn::Store(hn::DemoteTo(di, fixed_point(hn::Mul(round_half_away(hn::Mul(sy, snap_scale)), grid_step))), di,
               y_fp);
     hn::Store(hn::DemoteTo(df, hn::Mul(hn::PromoteTo(dd, vz), inv)), df, depth);
     hn::Store(hn::DemoteTo(df, inv), df, inv_w);

@@ -5,9 +5,10 @@
 #include <cmath>
 #include <string>
 
-#include <tbb/parallel_for.h>
+#include <tbb/blocked_range.h>
 
 #include "util/error.h"
+#include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
@@ -32,7 +33,7 @@ ShadedDraw shade_draw(const DrawCall& draw, const TileGrid& grid, const GuardBan
   shaded.snapped.resize(draw.vertex_count);
   shaded.referenced = std::vector<std::atomic<uint8_t>>(draw.vertex_count);  // all 0
   std::atomic<uint64_t> sanitized{0};
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, draw.vertex_count, kVertexGrain),
+  ontile::parallel_for(tbb::blocked_range<uint32_t>(0, draw.vertex_count, kVertexGrain),
                     [&](const tbb::blocked_range<uint32_t>& r) {
     float* var = shaded.varyings.data() + static_cast<size_t>(r.begin()) * n;
     draw.vertex_shader->shade(r.begin(), r.size(), shaded.positions.data() + r.begin(), var);

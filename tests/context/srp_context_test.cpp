@@ -2,6 +2,7 @@
 // keyword variants, command buffers (clears, temporary targets, blit, skybox) and their errors.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <typeinfo>
 
 #include "context/render_context.h"
@@ -81,15 +82,18 @@ struct Fixture {
   }
 };
 
+// The frame keeps its context: the context owns the colour surface, which centre() reads
+// after draw() returns (AddressSanitizer found the earlier version reading freed memory).
 struct Frame {
+  std::unique_ptr<RenderContext> context = std::make_unique<RenderContext>();
   FrameReport report;
   Surface* color = nullptr;
   glm::vec4 centre() const { return color->read(kW / 2, kH / 2); }
 };
 
 Frame draw(Fixture& f, const DrawingSettings& drawing, const FilteringSettings& filtering) {
-  RenderContext ctx;
   Frame out;
+  RenderContext& ctx = *out.context;
   out.color = ctx.create_surface("c", PixelFormat::RGBA8_UNORM, kW, kH);
   const CullingResults culling = ctx.cull(f.renderers, f.camera);
   ctx.set_render_target({{RenderTargetRef::of(out.color), LoadAction::Clear, StoreAction::Store}});

@@ -124,8 +124,13 @@ TEST(CellRaster, InterpolationErrorStaysWithinTheDocumentedBound) {
   for (int i = 0; i < 400; ++i) {
     glm::vec4 clip[3];
     for (auto& c : clip) {
+      // One draw per statement: the order of evaluation of function arguments is unspecified
+      // (GCC draws the second argument first, clang the first), so the sample, and this
+      // test's worst error, depended on the compiler. Kept in GCC's order: y, then x.
       const double ww = w(rng);
-      c = clip_of_pixel(pos(rng), pos(rng) * 0.6, ww);
+      const double y_px = pos(rng) * 0.6;
+      const double x_px = pos(rng);
+      c = clip_of_pixel(x_px, y_px, ww);
       c.z = static_cast<float>(z(rng) * ww);
     }
     TriangleSetup t;
