@@ -307,13 +307,13 @@ TEST(Texture2D, RepeatedFetchesTraceLikeSeparateSamples) {
       glm::vec4 a[4], b[4], c[4];
       {
         TexelTraceScope scope(&twice);
-        record_texel_address(uint64_t{i} << 20);  // a previous granule unrelated to the texture
+        record_texel_address(static_cast<uint64_t>(i) << 20);  // a previous granule unrelated to the texture
         texture->sample_quad(sampler, uv, a);
         texture->sample_quad(sampler, uv, b);
       }
       {
         TexelTraceScope scope(&repeated);
-        record_texel_address(uint64_t{i} << 20);
+        record_texel_address(static_cast<uint64_t>(i) << 20);
         texture->sample_quad(sampler, uv, c, 2);
       }
       EXPECT_EQ(repeated, twice) << texture->name() << " quad " << i;
