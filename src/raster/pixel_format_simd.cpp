@@ -110,7 +110,7 @@ void DecodeRgb10a2Kernel(const uint8_t* src, int pixels, float* rgba) {
 // rebiasing with round to nearest even, subnormals through an exact scaling and one float
 // round-to-integer, NaN payloads kept (never Inf). Returns / takes the code in the low 16 bits.
 template <class DI>
-hn::Vec<DI> half_code(DI di, hn::Vec<DI> f) {
+HWY_INLINE hn::Vec<DI> half_code(DI di, hn::Vec<DI> f) {
   const hn::Rebind<float, DI> df;
   const auto sign = hn::ShiftLeft<15>(hn::ShiftRight<31>(hn::BitCast(hn::RebindToUnsigned<DI>(), f)));
   const auto magnitude = hn::And(f, hn::Set(di, 0x7FFFFFFF));
@@ -118,7 +118,12 @@ hn::Vec<DI> half_code(DI di, hn::Vec<DI> f) {
   auto payload = hn::And(hn::ShiftRight<13>(magnitude), hn::Set(di, 0x3FF));
   payload = hn::IfThenElse(hn::Eq(payload, hn::Zero(di)), hn::Set(di, 0x200), payload);
   const auto nan_code = hn::Or(exponent_all_ones, payload);
-  const auto scaled = hn::Mul(hn::BitCast(df, magnitude), hn::Set(df, 16777216.0f));  // 2^(14+10)
+  // Only subnormal-range lanes go through the float rounding (the others as 0), so no lane
+  // converts a NaN or an out-of-range value to int (undefined in C++, on Highway's EMU128).
+  const auto is_subnormal = hn::Lt(magnitude, hn::Set(di, 0x38800000));
+  const auto subnormal_magnitude = hn::IfThenElseZero(is_subnormal, magnitude);
+  const auto scaled =
+      hn::Mul(hn::BitCast(df, subnormal_magnitude), hn::Set(df, 16777216.0f));  // 2^(14+10)
   const auto rounded_float =
       hn::Sub(hn::Add(scaled, hn::Set(df, 8388608.0f)), hn::Set(df, 8388608.0f));
   const auto subnormal_code = hn::ConvertTo(di, rounded_float);
@@ -127,14 +132,14 @@ hn::Vec<DI> half_code(DI di, hn::Vec<DI> f) {
                                hn::And(hn::ShiftRight<13>(rebased), hn::Set(di, 1)));
   const auto code = hn::ShiftRight<13>(rounded);
   const auto normal_code = hn::IfThenElse(hn::Gt(code, hn::Set(di, 0x7BFF)), exponent_all_ones, code);
-  auto result = hn::IfThenElse(hn::Lt(magnitude, hn::Set(di, 0x38800000)), subnormal_code, normal_code);
+  auto result = hn::IfThenElse(is_subnormal, subnormal_code, normal_code);
   result = hn::IfThenElse(hn::Eq(magnitude, hn::Set(di, 0x7F800000)), exponent_all_ones, result);
   result = hn::IfThenElse(hn::Gt(magnitude, hn::Set(di, 0x7F800000)), nan_code, result);
   return hn::Or(hn::BitCast(di, sign), result);
 }
 
 template <class DI>
-hn::Vec<DI> half_value_bits(DI di, hn::Vec<DI> code) {
+HWY_INLINE hn::Vec<DI> half_value_bits(DI di, hn::Vec<DI> code) {
   const hn::Rebind<float, DI> df;
   const auto sign = hn::ShiftLeft<16>(hn::And(code, hn::Set(di, 0x8000)));
   const auto exponent = hn::And(hn::ShiftRight<10>(code), hn::Set(di, 0x1F));
