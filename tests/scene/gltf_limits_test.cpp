@@ -15,20 +15,8 @@ namespace ontile {
 namespace {
 
 using nlohmann::json;
+using test::expect_load_error;
 using test::GltfBuilder;
-
-void expect_load_error(const std::filesystem::path& path, const std::string& phrase,
-                       const GltfLoadOptions& options = {}) {
-  try {
-    load_gltf(path, options);
-    ADD_FAILURE() << "no error for " << path << " (expected '" << phrase << "')";
-  } catch (const Error& error) {
-    const std::string message = error.what();
-    EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
-    EXPECT_NE(message.find(phrase), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
-}
 
 const std::vector<float> kTriangle = {0, 0, 0, 1, 0, 0, 0, 1, 0};
 

@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "scene/gltf_loader.h"
+#include "util/error.h"
+
 namespace ontile::test {
 
 inline constexpr int kByte = 5120, kUnsignedByte = 5121, kShort = 5122, kUnsignedShort = 5123,
@@ -220,5 +223,20 @@ class GltfBuilder {
     json["buffers"].push_back(buffer);
   }
 };
+
+// Loading `path` throws one ontile::Error: a single line that starts with the file's path and
+// contains `phrase`.
+inline void expect_load_error(const std::filesystem::path& path, const std::string& phrase,
+                       const GltfLoadOptions& options = {}) {
+  try {
+    load_gltf(path, options);
+    ADD_FAILURE() << "no error for " << path << " (expected '" << phrase << "')";
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find(phrase), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
 
 }  // namespace ontile::test
