@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "raster/cell_raster.h"
 #include "raster/pixel_format.h"
 #include "raster/texel_trace.h"
 #include "util/error.h"
@@ -287,8 +288,8 @@ TEST(Texture2D, RejectsBadSizes) {
 }
 
 // sample_quad(..., fetches = 2) stands for two identical sample instructions: the same value and
-// the same texel trace as two calls, on the SIMD path (8-bit, linear) and the general paths
-// (Float32, nearest), whatever the granule the trace ended on before.
+// the same texel trace as two calls, on the SIMD path (8-bit, linear; every SIMD target) and the
+// general paths (Float32, nearest), whatever the granule the trace ended on before.
 TEST(Texture2D, RepeatedFetchesTraceLikeSeparateSamples) {
   const auto noise = noise_texture(37, 29, true);
   const auto coords = coordinate_texture(16, 16);
@@ -299,33 +300,40 @@ TEST(Texture2D, RepeatedFetchesTraceLikeSeparateSamples) {
       {coords.get(), sampler_of(FilterMode::Linear, MipmapMode::Linear)},
   };
   int quads_with_merged_repeats = 0;
-  for (const auto& [texture, sampler] : cases) {
-    for (int i = 0; i < 40; ++i) {
-      glm::vec2 uv[4];
-      make_quad(*texture, {0.013f * i, 0.7f - 0.021f * i}, 0.25f + 0.2f * i, 0.5f + 0.1f * i, uv);
-      std::vector<uint64_t> twice, repeated;
-      glm::vec4 a[4], b[4], c[4];
-      {
-        TexelTraceScope scope(&twice);
-        record_texel_address(static_cast<uint64_t>(i) << 20);  // a previous granule unrelated to the texture
-        texture->sample_quad(sampler, uv, a);
-        texture->sample_quad(sampler, uv, b);
-      }
-      {
-        TexelTraceScope scope(&repeated);
-        record_texel_address(static_cast<uint64_t>(i) << 20);
-        texture->sample_quad(sampler, uv, c, 2);
-      }
-      EXPECT_EQ(repeated, twice) << texture->name() << " quad " << i;
-      for (int lane = 0; lane < 4; ++lane) {
-        for (int ch = 0; ch < 4; ++ch) {
-          EXPECT_EQ(std::bit_cast<uint32_t>(c[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
-          EXPECT_EQ(std::bit_cast<uint32_t>(a[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
+  struct AutomaticTargetOnExit {
+    ~AutomaticTargetOnExit() { force_simd_target(""); }
+  } restore;
+  for (const std::string& target : simd_targets()) {
+    SCOPED_TRACE(target);
+    force_simd_target(target);
+    for (const auto& [texture, sampler] : cases) {
+      for (int i = 0; i < 40; ++i) {
+        glm::vec2 uv[4];
+        make_quad(*texture, {0.013f * i, 0.7f - 0.021f * i}, 0.25f + 0.2f * i, 0.5f + 0.1f * i, uv);
+        std::vector<uint64_t> twice, repeated;
+        glm::vec4 a[4], b[4], c[4];
+        {
+          TexelTraceScope scope(&twice);
+          record_texel_address(static_cast<uint64_t>(i) << 20);  // a previous granule unrelated to the texture
+          texture->sample_quad(sampler, uv, a);
+          texture->sample_quad(sampler, uv, b);
         }
+        {
+          TexelTraceScope scope(&repeated);
+          record_texel_address(static_cast<uint64_t>(i) << 20);
+          texture->sample_quad(sampler, uv, c, 2);
+        }
+        EXPECT_EQ(repeated, twice) << texture->name() << " quad " << i;
+        for (int lane = 0; lane < 4; ++lane) {
+          for (int ch = 0; ch < 4; ++ch) {
+            EXPECT_EQ(std::bit_cast<uint32_t>(c[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
+            EXPECT_EQ(std::bit_cast<uint32_t>(a[lane][ch]), std::bit_cast<uint32_t>(b[lane][ch]));
+          }
+        }
+        // The previous granule, then a footprint inside one granule that the repeat merges into:
+        // the collapse across fetches is exercised.
+        quads_with_merged_repeats += twice.size() == 2;
       }
-      // The previous granule, then a footprint inside one granule that the repeat merges into:
-      // the collapse across fetches is exercised.
-      quads_with_merged_repeats += twice.size() == 2;
     }
   }
   EXPECT_GT(quads_with_merged_repeats, 0);
