@@ -62,9 +62,22 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
   if (s->samples() != 1) {
     throw Error("render target '" + s->name() + "' is multisampled and cannot be sampled; resolve it first");
   }
-  auto& snapshot = snapshots_[s];
-  if (!snapshot) {
-    // Decoded a row at a time (decode_pixels: the values Surface::read gives, on SIMD lanes).
+  // One texture per surface and pass, so a surface is one texture region of the cache model
+  // however often the pass binds it (and a new region in each pass, as before views existed).
+  auto& texture = surface_textures_[s];
+  if (texture) {
+    textures_.push_back(texture);
+    return texture;
+  }
+  if (Texture2D::samples_in_place(s->format())) {
+    // Sampled in place, no copy: surfaces change only while a pass executes (close_pass), and a
+    // surface the open pass samples is not one of its attachments (checked above), so its bytes
+    // stay as they are now until the pass's draws have run.
+    texture = Texture2D::view_of_surface(s->width(), s->height(), s->format(),
+                                         s->pixel_bytes(0, 0), s->name());
+  } else {
+    // Packed formats: decoded once, a row at a time (decode_pixels: the values Surface::read
+    // gives, on SIMD lanes), cheaper than decoding at every texel read of the pass.
     const size_t row_floats = static_cast<size_t>(s->width()) * 4;
     std::vector<float> rgba(row_floats * s->height());
     std::vector<glm::vec4> row(static_cast<size_t>(s->width()));
@@ -73,11 +86,11 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
       decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(), row.data());
       std::memcpy(rgba.data() + row_floats * y, row.data(), row_floats * sizeof(float));
     }
-    snapshot = Texture2D::from_surface_texels(s->width(), s->height(), std::move(rgba),
-                                              bytes_per_pixel(s->format()), s->name());
+    texture = Texture2D::from_surface_texels(s->width(), s->height(), std::move(rgba),
+                                             bytes_per_pixel(s->format()), s->name());
   }
-  textures_.push_back(snapshot);
-  return snapshot;
+  textures_.push_back(texture);
+  return texture;
 }
 
 SubpassDesc& FrameExecutor::current_subpass(const char* what) {
@@ -97,7 +110,7 @@ void FrameExecutor::close_pass() {
   vertex_shaders_.clear();
   fragment_shaders_.clear();
   textures_.clear();
-  snapshots_.clear();  // the pass may have written surfaces that were sampled
+  surface_textures_.clear();  // the next pass samples surfaces as new texture regions
 }
 
 void FrameExecutor::add_draw(DrawCall draw) {

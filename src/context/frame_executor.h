@@ -71,7 +71,8 @@ class FrameExecutor {
   std::vector<std::unique_ptr<VertexShader>> vertex_shaders_;
   std::vector<std::unique_ptr<FragmentShader>> fragment_shaders_;
   std::vector<std::shared_ptr<const Texture2D>> textures_;
-  std::map<const Surface*, std::shared_ptr<const Texture2D>> snapshots_;
+  // The open pass's textures of render targets: views, or decoded copies of packed formats.
+  std::map<const Surface*, std::shared_ptr<const Texture2D>> surface_textures_;
 };
 
 }  // namespace ontile

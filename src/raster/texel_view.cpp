@@ -10,9 +10,12 @@ Texture2D::TexelView Texture2D::texel_view(int level) const {
   TexelView v;
   if (encoding_ == TexelEncoding::Float32) {
     v.texels32f = l.texels32f.data();
+  } else if (encoding_ == TexelEncoding::SurfaceFormat) {
+    v.surface_bytes = l.surface_bytes;
+    v.surface_format = l.surface_format;
   } else {
     // The tables fetch() decodes with: sRGB colour channels for Srgb8, alpha always unorm.
-    v.texels8 = l.texels8.data();
+    v.texels8 = l.bytes8();
     v.rgb_decode = encoding_ == TexelEncoding::Srgb8 ? srgb8_decode_table().data()
                                                      : unorm8_decode_table().data();
     v.alpha_decode = unorm8_decode_table().data();

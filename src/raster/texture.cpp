@@ -52,17 +52,27 @@ TexelDecoder decoder_for(TexelEncoding encoding) {
 // Non-finite coordinates are treated as 0 so that NaN/Inf uv can never index out of bounds.
 inline float finite_or_zero(float x) { return std::isfinite(x) ? x : 0.0f; }
 
-template <bool kFloat>
+// Where a level's texels live, a template parameter so each sampler loop loads one way.
+enum class Storage { Bytes8, Float32, SurfaceFormat };
+
+Storage storage_of(TexelEncoding encoding) {
+  if (encoding == TexelEncoding::Float32) return Storage::Float32;
+  if (encoding == TexelEncoding::SurfaceFormat) return Storage::SurfaceFormat;
+  return Storage::Bytes8;
+}
+
+template <Storage kStorage>
 inline glm::vec4 load_texel(const Texture2D::Level& level, const TexelDecoder& decoder, int x,
                             int y) {
   const size_t texel = static_cast<size_t>(y) * level.width + x;
   if (decoder.trace) record_texel_address(level.address + texel * level.memory_bytes_per_texel);
-  const size_t index = texel * kChannels;
-  if constexpr (kFloat) {
-    const float* p = level.texels32f.data() + index;
+  if constexpr (kStorage == Storage::Float32) {
+    const float* p = level.texels32f.data() + texel * kChannels;
     return {p[0], p[1], p[2], p[3]};
+  } else if constexpr (kStorage == Storage::SurfaceFormat) {
+    return Texture2D::load_surface_texel(level.surface_format, level.surface_bytes, texel);
   } else {
-    const uint8_t* p = level.texels8.data() + index;
+    const uint8_t* p = level.bytes8() + texel * kChannels;
     return {decoder.rgb[p[0]], decoder.rgb[p[1]], decoder.rgb[p[2]], decoder.alpha[p[3]]};
   }
 }
@@ -81,7 +91,7 @@ inline float texel_coord(float u, int size, WrapMode mode, float offset) {
 }
 
 // One filtered sample of one level; uv must be finite.
-template <bool kFloat>
+template <Storage kStorage>
 glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decoder,
                        const SamplerDesc& sampler, FilterMode filter, glm::vec2 uv) {
   const int w = level.width, h = level.height;
@@ -91,7 +101,7 @@ glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decode
     const float y = texel_coord(uv.y, h, sampler.wrap_v, 0.0f);
     const int i = wrap_texel_index(static_cast<int>(std::floor(x)), w, sampler.wrap_u);
     const int j = wrap_texel_index(static_cast<int>(std::floor(y)), h, sampler.wrap_v);
-    return load_texel<kFloat>(level, decoder, i, j);
+    return load_texel<kStorage>(level, decoder, i, j);
   }
   // Bilinear: i0 = floor(u * size - 0.5), alpha = frac(u * size - 0.5) (OpenGL 4.6 eq. 8.10).
   const float x = texel_coord(uv.x, w, sampler.wrap_u, 0.5f);
@@ -106,10 +116,10 @@ glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decode
   // Loads in separate statements so the texel trace sees a fixed order (operand evaluation
   // order inside one expression is unspecified). p * (1 - t) + q * t (not p + (q - p) * t):
   // exact at t = 0 and a correctly rounded mean at t = 0.5.
-  const glm::vec4 t00 = load_texel<kFloat>(level, decoder, xa, ya);
-  const glm::vec4 t10 = load_texel<kFloat>(level, decoder, xb, ya);
-  const glm::vec4 t01 = load_texel<kFloat>(level, decoder, xa, yb);
-  const glm::vec4 t11 = load_texel<kFloat>(level, decoder, xb, yb);
+  const glm::vec4 t00 = load_texel<kStorage>(level, decoder, xa, ya);
+  const glm::vec4 t10 = load_texel<kStorage>(level, decoder, xb, ya);
+  const glm::vec4 t01 = load_texel<kStorage>(level, decoder, xa, yb);
+  const glm::vec4 t11 = load_texel<kStorage>(level, decoder, xb, yb);
   const glm::vec4 top = t00 * (1.0f - a) + t10 * a;
   const glm::vec4 bottom = t01 * (1.0f - a) + t11 * a;
   return top * (1.0f - b) + bottom * b;
@@ -117,36 +127,36 @@ glm::vec4 sample_level(const Texture2D::Level& level, const TexelDecoder& decode
 
 // Filter and level selection for a level of detail lambda (bias already added), OpenGL 4.6
 // section 8.14.2-8.14.3: lambda is clamped to [0, levels - 1]; lambda <= 0 magnifies.
-template <bool kFloat>
+template <Storage kStorage>
 glm::vec4 sample_with_lambda(const std::vector<Texture2D::Level>& levels,
                              const TexelDecoder& decoder, const SamplerDesc& sampler, glm::vec2 uv,
                              float lambda) {
   const float max_level = static_cast<float>(levels.size() - 1);
   if (!(lambda > 0.0f)) {  // also NaN
-    return sample_level<kFloat>(levels[0], decoder, sampler, sampler.mag_filter, uv);
+    return sample_level<kStorage>(levels[0], decoder, sampler, sampler.mag_filter, uv);
   }
   lambda = std::min(lambda, max_level);
   const FilterMode filter = sampler.min_filter;
   switch (sampler.mipmap_mode) {
     case MipmapMode::None:
-      return sample_level<kFloat>(levels[0], decoder, sampler, filter, uv);
+      return sample_level<kStorage>(levels[0], decoder, sampler, filter, uv);
     case MipmapMode::Nearest: {
       // d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level (eq. 8.19).
       const int d = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
-      return sample_level<kFloat>(levels[d], decoder, sampler, filter, uv);
+      return sample_level<kStorage>(levels[d], decoder, sampler, filter, uv);
     }
     case MipmapMode::Linear: {
       // Trilinear: blend levels floor(lambda) and floor(lambda) + 1 by frac(lambda) (eq. 8.20).
       const float d1_float = std::floor(lambda);
       const int d1 = static_cast<int>(d1_float);
       const float blend = lambda - d1_float;
-      const glm::vec4 s1 = sample_level<kFloat>(levels[d1], decoder, sampler, filter, uv);
+      const glm::vec4 s1 = sample_level<kStorage>(levels[d1], decoder, sampler, filter, uv);
       if (blend == 0.0f) return s1;
-      const glm::vec4 s2 = sample_level<kFloat>(levels[d1 + 1], decoder, sampler, filter, uv);
+      const glm::vec4 s2 = sample_level<kStorage>(levels[d1 + 1], decoder, sampler, filter, uv);
       return s1 * (1.0f - blend) + s2 * blend;
     }
   }
-  return sample_level<kFloat>(levels[0], decoder, sampler, filter, uv);
+  return sample_level<kStorage>(levels[0], decoder, sampler, filter, uv);
 }
 
 // Scale factor rho of OpenGL 4.6 eq. 8.7 from the quad's finite-differenced uv, in texels of
@@ -198,7 +208,7 @@ class Linear8Sampler {
         last_ = granule;
       }
     }
-    const uint8_t* p = level.texels8.data() + texel * kChannels;
+    const uint8_t* p = level.bytes8() + texel * kChannels;
     return {rgb_[p[0]], rgb_[p[1]], rgb_[p[2]], alpha_[p[3]]};
   }
 
@@ -266,7 +276,7 @@ void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const Texe
   }
 }
 
-template <bool kFloat>
+template <Storage kStorage>
 void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
                        const SamplerDesc& sampler, const glm::vec2 uv[4], int fetches,
                        glm::vec4 out[4]) {
@@ -274,8 +284,22 @@ void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelD
   for (int lane = 0; lane < 4; ++lane) {
     finite_uv[lane] = {finite_or_zero(uv[lane].x), finite_or_zero(uv[lane].y)};
   }
+  if ((kStorage != Storage::Bytes8 || sampler.mag_filter == FilterMode::Nearest) &&
+      sampler.mag_filter == sampler.min_filter &&
+      (sampler.mipmap_mode == MipmapMode::None || levels.size() == 1)) {
+    // One filter and one level (render targets, nearest copies): sample_with_lambda reads level
+    // 0 with that filter whatever lambda is (a positive lambda clamps to the last level, 0, and
+    // selects it with blend 0), so the derivatives and log2 are skipped.
+    for (int fetch = 0; fetch < fetches; ++fetch) {
+      for (int lane = 0; lane < 4; ++lane) {
+        out[lane] = sample_level<kStorage>(levels[0], decoder, sampler, sampler.mag_filter,
+                                           finite_uv[lane]);
+      }
+    }
+    return;
+  }
   const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
-  if constexpr (!kFloat) {
+  if constexpr (kStorage == Storage::Bytes8) {
     if (sampler.mag_filter == FilterMode::Linear && sampler.min_filter == FilterMode::Linear) {
       sample_quad_linear8(levels, decoder, sampler, finite_uv, lambda, fetches, out);
       return;
@@ -283,7 +307,7 @@ void sample_quad_lanes(const std::vector<Texture2D::Level>& levels, const TexelD
   }
   for (int fetch = 0; fetch < fetches; ++fetch) {
     for (int lane = 0; lane < 4; ++lane) {
-      out[lane] = sample_with_lambda<kFloat>(levels, decoder, sampler, finite_uv[lane], lambda);
+      out[lane] = sample_with_lambda<kStorage>(levels, decoder, sampler, finite_uv[lane], lambda);
     }
   }
 }
@@ -352,6 +376,31 @@ std::shared_ptr<const Texture2D> Texture2D::from_surface_texels(int width, int h
   return texture;
 }
 
+std::shared_ptr<const Texture2D> Texture2D::view_of_surface(int width, int height,
+                                                            PixelFormat format,
+                                                            const uint8_t* bytes,
+                                                            std::string name) {
+  if (width <= 0 || height <= 0 || bytes == nullptr) {
+    throw Error("texture '" + name + "': invalid surface view " + std::to_string(width) + "x" +
+                std::to_string(height) + (bytes ? "" : " without pixels"));
+  }
+  std::shared_ptr<Texture2D> texture(new Texture2D());
+  // RGBA8 pixels are the 8-bit encodings' texels, decoded with the same tables
+  // (pixel_format.cpp), so those views take the 8-bit sampling paths.
+  texture->encoding_ = format == PixelFormat::RGBA8_SRGB    ? TexelEncoding::Srgb8
+                       : format == PixelFormat::RGBA8_UNORM ? TexelEncoding::Unorm8
+                                                            : TexelEncoding::SurfaceFormat;
+  texture->name_ = std::move(name);
+  Level level;
+  level.width = width;
+  level.height = height;
+  level.surface_bytes = bytes;
+  level.surface_format = format;
+  texture->levels_.push_back(std::move(level));
+  texture->assign_addresses(bytes_per_pixel(format));
+  return texture;
+}
+
 void Texture2D::assign_addresses(int memory_bytes_per_texel) {
   uint64_t size_bytes = 0;
   for (Level& level : levels_) {
@@ -382,6 +431,7 @@ int Texture2D::level_count() const { return static_cast<int>(levels_.size()); }
 TexelEncoding Texture2D::encoding() const { return encoding_; }
 const std::string& Texture2D::name() const { return name_; }
 int Texture2D::bytes_per_texel() const {
+  if (encoding_ == TexelEncoding::SurfaceFormat) return bytes_per_pixel(levels_[0].surface_format);
   return encoding_ == TexelEncoding::Float32 ? 4 * static_cast<int>(sizeof(float)) : 4;
 }
 
@@ -398,9 +448,21 @@ uint64_t Texture2D::texel_address(int level, int x, int y) const {
 }
 
 glm::vec4 Texture2D::fetch(int level, int x, int y) const {
-  const TexelDecoder decoder = decoder_for(encoding_);
-  if (encoding_ == TexelEncoding::Float32) return load_texel<true>(levels_[level], decoder, x, y);
-  return load_texel<false>(levels_[level], decoder, x, y);
+  // Shaders fetch texel by texel (shadow-map PCF, G-buffer reads): only 8-bit texels need the
+  // decode tables, so the others skip looking them up.
+  const Level& l = levels_[level];
+  const TexelDecoder untabled{nullptr, nullptr, texel_trace_detail::sink != nullptr};
+  switch (storage_of(encoding_)) {
+    case Storage::Float32: return load_texel<Storage::Float32>(l, untabled, x, y);
+    case Storage::SurfaceFormat: return load_texel<Storage::SurfaceFormat>(l, untabled, x, y);
+    case Storage::Bytes8: break;
+  }
+  return load_texel<Storage::Bytes8>(l, decoder_for(encoding_), x, y);
+}
+
+bool Texture2D::samples_in_place(PixelFormat format) {
+  return format == PixelFormat::RGBA8_UNORM || format == PixelFormat::RGBA8_SRGB ||
+         format == PixelFormat::D32_FLOAT || format == PixelFormat::R32_FLOAT;
 }
 
 glm::vec4 Texture2D::sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const {
@@ -409,21 +471,31 @@ glm::vec4 Texture2D::sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float 
   // Operation"); a NaN LOD selects the base level.
   const float lambda = lod + sampler.lod_bias;
   const TexelDecoder decoder = decoder_for(encoding_);
-  if (encoding_ == TexelEncoding::Float32) {
-    return sample_with_lambda<true>(levels_, decoder, sampler, finite_uv, lambda);
+  switch (storage_of(encoding_)) {
+    case Storage::Float32:
+      return sample_with_lambda<Storage::Float32>(levels_, decoder, sampler, finite_uv, lambda);
+    case Storage::SurfaceFormat:
+      return sample_with_lambda<Storage::SurfaceFormat>(levels_, decoder, sampler, finite_uv,
+                                                        lambda);
+    case Storage::Bytes8: break;
   }
-  return sample_with_lambda<false>(levels_, decoder, sampler, finite_uv, lambda);
+  return sample_with_lambda<Storage::Bytes8>(levels_, decoder, sampler, finite_uv, lambda);
 }
 
 void Texture2D::sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4],
                             glm::vec4 out[4], int fetches) const {
   const TexelDecoder decoder = decoder_for(encoding_);
   fetches = std::max(fetches, 1);
-  if (encoding_ == TexelEncoding::Float32) {
-    sample_quad_lanes<true>(levels_, decoder, sampler, uv, fetches, out);
-  } else {
-    sample_quad_lanes<false>(levels_, decoder, sampler, uv, fetches, out);
+  switch (storage_of(encoding_)) {
+    case Storage::Float32:
+      sample_quad_lanes<Storage::Float32>(levels_, decoder, sampler, uv, fetches, out);
+      return;
+    case Storage::SurfaceFormat:
+      sample_quad_lanes<Storage::SurfaceFormat>(levels_, decoder, sampler, uv, fetches, out);
+      return;
+    case Storage::Bytes8: break;
   }
+  sample_quad_lanes<Storage::Bytes8>(levels_, decoder, sampler, uv, fetches, out);
 }
 
 }  // namespace ontile

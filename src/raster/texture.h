@@ -4,11 +4,14 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "raster/pixel_format.h"
 
 namespace ontile {
 
@@ -26,8 +29,9 @@ struct SamplerDesc {
   friend bool operator==(const SamplerDesc&, const SamplerDesc&) = default;
 };
 
-// How texels are stored; sampling always returns linear float RGBA.
-enum class TexelEncoding { Unorm8, Srgb8, Float32 };
+// How texels are stored; sampling always returns linear float RGBA. SurfaceFormat: a render
+// target's own bytes in its PixelFormat, decoded as Surface::read decodes them (view_of_surface).
+enum class TexelEncoding { Unorm8, Srgb8, Float32, SurfaceFormat };
 
 class Texture2D {
  public:
@@ -50,12 +54,39 @@ class Texture2D {
                                                               int memory_bytes_per_texel,
                                                               std::string name);
 
+  // A render target sampled in place, without a copy: `bytes` are the surface's pixels, row
+  // after row, in `format` (single-sample). RGBA8 and sRGB8 surfaces become Unorm8 and Srgb8
+  // textures over those bytes (their decode tables are the format's), every other format is
+  // decoded per texel read with decode_pixel; a single level, addresses as from_surface_texels
+  // gives them for bytes_per_pixel(format). The bytes must stay alive and unchanged while the
+  // texture is sampled. Throws Error (naming `name`) on a bad size or a null `bytes`.
+  static std::shared_ptr<const Texture2D> view_of_surface(int width, int height,
+                                                          PixelFormat format,
+                                                          const uint8_t* bytes, std::string name);
+
+  // Whether a render target of `format` can be sampled in place at about the cost of a texture
+  // (its stored texel is the value: RGBA8, sRGB8 and 32-bit float depth or red). Packed formats
+  // (RGB10A2, half floats, ...) decode per texel read, which bilinear footprints and PCF
+  // repeat up to 16 times per pixel, so the context samples a decoded copy of those instead.
+  static bool samples_in_place(PixelFormat format);
+  // Texel `texel` (row-major index) of surface pixels in `format`: decode_pixel, with 32-bit
+  // float depth and red read inline.
+  static glm::vec4 load_surface_texel(PixelFormat format, const uint8_t* pixels, size_t texel) {
+    if (format == PixelFormat::D32_FLOAT || format == PixelFormat::R32_FLOAT) {
+      float value;
+      std::memcpy(&value, pixels + texel * 4, sizeof value);
+      return {value, 0.0f, 0.0f, 1.0f};
+    }
+    return decode_pixel(format, pixels + texel * bytes_per_pixel(format));
+  }
+
   int width(int level = 0) const;
   int height(int level = 0) const;
   int level_count() const;
   TexelEncoding encoding() const;
   const std::string& name() const;
-  // Bytes one texel occupies in memory (4 for 8-bit encodings, 16 for Float32).
+  // Bytes one texel occupies in memory (4 for 8-bit encodings, 16 for Float32, the format's
+  // size for SurfaceFormat).
   int bytes_per_texel() const;
 
   // Simulated memory layout (for the texture-cache model): each texture owns the region
@@ -67,7 +98,7 @@ class Texture2D {
   static uint64_t reserved_bytes_of(uint64_t texture_id);
   uint64_t base_address() const;
   uint64_t level_offset_bytes(int level) const;  // prefix sum of the sizes of levels < level
-  int memory_bytes_per_texel() const;            // bytes_per_texel() unless a surface snapshot
+  int memory_bytes_per_texel() const;            // the stored size: a surface's for snapshots
   // base + level offset + (y * width + x) * memory_bytes_per_texel.
   uint64_t texel_address(int level, int x, int y) const;
 
@@ -80,6 +111,8 @@ class Texture2D {
   struct TexelView {
     const float* texels32f = nullptr;     // Float32: RGBA floats, row-major; null otherwise
     const uint8_t* texels8 = nullptr;     // Unorm8/Srgb8: RGBA bytes, row-major
+    const uint8_t* surface_bytes = nullptr;  // SurfaceFormat: pixels in surface_format
+    PixelFormat surface_format = PixelFormat::RGBA8_UNORM;
     const float* rgb_decode = nullptr;    // 8-bit: byte -> linear float for R, G, B
     const float* alpha_decode = nullptr;  // 8-bit: byte -> float for A
     int width = 0, height = 0;
@@ -87,12 +120,13 @@ class Texture2D {
     uint64_t memory_bytes_per_texel = 0;
 
     glm::vec4 load(int x, int y) const {
-      const size_t index = (static_cast<size_t>(y) * static_cast<size_t>(width) + x) * 4;
+      const size_t texel = static_cast<size_t>(y) * static_cast<size_t>(width) + x;
       if (texels32f) {
-        const float* t = texels32f + index;
+        const float* t = texels32f + texel * 4;
         return {t[0], t[1], t[2], t[3]};
       }
-      const uint8_t* t = texels8 + index;
+      if (surface_bytes) return load_surface_texel(surface_format, surface_bytes, texel);
+      const uint8_t* t = texels8 + texel * 4;
       return {rgb_decode[t[0]], rgb_decode[t[1]], rgb_decode[t[2]], alpha_decode[t[3]]};
     }
   };
@@ -114,10 +148,16 @@ class Texture2D {
 
   struct Level {
     int width = 0, height = 0;
-    std::vector<uint8_t> texels8;  // Unorm8/Srgb8
+    std::vector<uint8_t> texels8;  // Unorm8/Srgb8 texels the texture owns
     std::vector<float> texels32f;  // Float32
     uint64_t address = 0;          // simulated byte address of texel (0, 0)
     uint32_t memory_bytes_per_texel = 4;
+    // A surface view's pixels (view_of_surface): RGBA8 bytes for Unorm8/Srgb8 views, else
+    // surface_format pixels; null when the level owns its texels.
+    const uint8_t* surface_bytes = nullptr;
+    PixelFormat surface_format = PixelFormat::RGBA8_UNORM;
+    // The RGBA8 texels of an Unorm8/Srgb8 level, owned or viewed.
+    const uint8_t* bytes8() const { return surface_bytes ? surface_bytes : texels8.data(); }
   };
 
  private:

@@ -177,7 +177,7 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
   // on the lanes at once.
   alignas(16) int32_t packed[2][4][kLanes];  // [level][tap][lane]
   for (int l = 0; l < in.level_count; ++l) {
-    const uint8_t* texels = in.levels[l]->texels8.data();
+    const uint8_t* texels = in.levels[l]->bytes8();
     for (int t = 0; t < 4; ++t) {
       for (int lane = 0; lane < kLanes; ++lane) {
         std::memcpy(&packed[l][t][lane], texels + static_cast<size_t>(taps[l][t][lane]) * 4, 4);

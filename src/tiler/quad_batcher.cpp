@@ -6,6 +6,7 @@
 
 #include "raster/blend.h"
 #include "tiler/hierarchical_depth.h"
+#include "tiler/quad_store_simd.h"
 
 namespace ontile {
 namespace {
@@ -74,7 +75,11 @@ void QuadBatcher::flush() {
     const int invocations = ctx.per_sample ? ctx.pattern.count : 1;
     for (int inv = 0; inv < invocations; ++inv) shade_invocation(inv);
   }
-  for (int q = 0; q < queued_; ++q) write_back(q);
+  if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_ && !ctx.fragments) {
+    write_back_single_sample();
+  } else {
+    for (int q = 0; q < queued_; ++q) write_back(q);
+  }
   queued_ = 0;
 }
 
@@ -155,7 +160,7 @@ void QuadBatcher::shade_invocation(int inv) {
   for (int q = 0; q < queued_; ++q) {
     const int slot = slot_[inv][q];
     if (slot < 0) continue;
-    counters_->fragments_shaded += std::popcount(static_cast<unsigned>(b.lane_mask[slot]));
+    counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
     const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
     for (int lane = 0; lane < kQuadLanes; ++lane) {
       if (!((discarded >> lane) & 1u)) continue;
@@ -200,14 +205,10 @@ void QuadBatcher::write_back(int q) {
   const QuadCoverage passing = quad.passing;
   if (ctx.late_z) {
     counters_->fragments_depth_rejected +=
-        std::popcount(static_cast<unsigned>(lanes_of(quad.coverage) & ~lanes_of(passing)));
+        lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
   }
   if (ctx.fragments) record_fragments(ctx, quad.qx, quad.qy, quad.coverage, passing);
   if (!passing) return;
-  if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_) {
-    write_back_single_sample(q);
-    return;
-  }
   const int samples = ctx.pattern.count;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
@@ -243,24 +244,44 @@ void QuadBatcher::write_back(int q) {
   }
 }
 
-// write_back for the common case: one sample per pixel, depth already written by early Z,
-// outputs already quantised per batch; each passing lane copies its outputs to tile memory.
-void QuadBatcher::write_back_single_sample(int q) {
+// write_back for the common case, the batch at once: one sample per pixel, depth already
+// written by early Z, outputs already quantised per batch. Quads whose four lanes all pass are
+// copied to tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never
+// share a pixel, so the order of their writes does not matter.
+void QuadBatcher::write_back_single_sample() {
   const TriangleContext& ctx = *ctx_;
-  const QueuedQuad& quad = queue_[q];
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const BatchOutput& out = *outputs_[0];
-  const int first = slot_[0][q] * kQuadLanes;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if (!lane_coverage(quad.passing, lane)) continue;
-    ++counters_->samples_written;
-    if (!ctx.write_color) continue;
-    const size_t i = memory_->index(quad.qx + (lane & 1) - ctx.rect.x0, quad.qy + (lane >> 1) - ctx.rect.y0, 0);
-    const int f = first + lane;
-    for (size_t k = 0; k < outputs.size(); ++k) {
-      memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
-                                             out.color[k][2][f], out.color[k][3][f]};
+  int full_quads = 0;
+  for (int q = 0; q < queued_; ++q) {
+    const QueuedQuad& quad = queue_[q];
+    const uint8_t lanes = lanes_of(quad.passing);
+    counters_->samples_written += lane_count(lanes);
+    if (!lanes || !ctx.write_color) continue;
+    const int first = slot_[0][q] * kQuadLanes;
+    const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
+    if (lanes == 0xF) {
+      full_first_fragment_[full_quads] = first;
+      full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
+      ++full_quads;
+      continue;
     }
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!((lanes >> lane) & 1u)) continue;
+      const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
+      const int f = first + lane;
+      for (size_t k = 0; k < outputs.size(); ++k) {
+        memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
+                                               out.color[k][2][f], out.color[k][3][f]};
+      }
+    }
+  }
+  if (full_quads == 0) return;
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                      out.color[k][3]};
+    store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
+                     memory_->color_plane(outputs[k]));
   }
 }
 

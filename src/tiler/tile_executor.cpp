@@ -178,6 +178,26 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
   }
 }
 
+// shade_quads for a draw without a fragment shader (shadow maps, depth pre-passes) when no
+// fragment accesses are recorded: nothing is shaded or written but depth, which early Z already
+// wrote, so only the counters remain, taken per cell rather than per quad: samples written are
+// the passing samples, and a pixel with a covered but no passing sample was rejected by depth
+// (what write_back and shade_quads count quad by quad).
+void count_unshaded_cells(const TriangleContext& ctx, const TileScratch& scratch,
+                          TileCounters& counters) {
+  for (const int cell : scratch.touched) {
+    const CellState& st = scratch.cells[cell];
+    if (!st.covered_any) continue;  // rejected whole by hierarchical Z (counted there)
+    CellMask passing_pixels = 0;
+    for (int s = 0; s < ctx.pattern.count; ++s) {
+      counters.samples_written += static_cast<uint64_t>(std::popcount(st.passing[s]));
+      passing_pixels |= st.passing[s];
+    }
+    counters.fragments_depth_rejected +=
+        static_cast<uint64_t>(std::popcount(st.covered_any & ~passing_pixels));
+  }
+}
+
 // Walks the triangle's quads in the tile's row-major order (the order the texture and IMR
 // models replay) and hands the surviving ones to the batcher.
 void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
@@ -218,7 +238,7 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
         }
         if (!ctx.late_z) {
           counters.fragments_depth_rejected +=
-              std::popcount(static_cast<unsigned>(lanes_of(coverage) & ~lanes_of(passing)));
+              lane_count(lanes_of(coverage) & ~lanes_of(passing));
           // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
           if (!passing && !ctx.fragments) continue;
         }
@@ -275,7 +295,11 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     scratch.touched.clear();
     rasterize_cells(ctx, cells, memory, counters, scratch);
     if (scratch.touched.empty()) continue;
-    shade_quads(ctx, cells, memory, counters, scratch);
+    if (!draw.fragment_shader && !ctx.fragments) {
+      count_unshaded_cells(ctx, scratch, counters);
+    } else {
+      shade_quads(ctx, cells, memory, counters, scratch);
+    }
     // Late-Z draws wrote depth after shading: bring their cells' bounds up to date.
     if (ctx.late_z && ctx.depth_write && ctx.hiz_tracked) {
       for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);

@@ -1,8 +1,11 @@
 // Main-light shadow map fitting and lookup (see main_light_shadows.h).
 #include "pipelines/universal/main_light_shadows.h"
 
+#include "raster/texel_trace.h"
+
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -70,17 +73,32 @@ float main_light_visibility(const ShadowLookup& s, glm::vec3 world_position, glm
   if (!(p.x >= 0.0f && p.x <= 1.0f && p.y >= 0.0f && p.y <= 1.0f && p.z >= 0.0f && p.z <= 1.0f)) {
     return 1.0f;
   }
-  const int w = s.map->width(), h = s.map->height();
+  const Texture2D::TexelView& map = s.texels;
+  const int w = map.width, h = map.height;
   const int cx = std::min(static_cast<int>(p.x * static_cast<float>(w)), w - 1);
   const int cy = std::min(static_cast<int>(p.y * static_cast<float>(h)), h - 1);
+  int xs[3], ys[3];
+  for (int d = 0; d < 3; ++d) {
+    xs[d] = std::clamp(cx + d - 1, 0, w - 1);
+    ys[d] = std::clamp(cy + d - 1, 0, h - 1);
+  }
+  // The texel trace of 9 Texture2D::fetch calls, row by row, with the thread's sink and last
+  // granule held in locals across them (record_texel_address's merge of repeats).
+  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
+  uint64_t last_granule = texel_trace_detail::last_granule;
   int lit = 0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    const int y = std::clamp(cy + dy, 0, h - 1);
-    for (int dx = -1; dx <= 1; ++dx) {
-      const int x = std::clamp(cx + dx, 0, w - 1);
-      if (p.z <= s.map->fetch(0, x, y).x) ++lit;
+  for (const int y : ys) {
+    for (const int x : xs) {
+      const uint64_t texel = static_cast<uint64_t>(y) * static_cast<uint64_t>(w) + x;
+      const uint64_t granule = (map.address + texel * map.memory_bytes_per_texel) >> 6;
+      if (sink && granule != last_granule) {
+        sink->push_back(granule);
+        last_granule = granule;
+      }
+      if (p.z <= map.load(x, y).x) ++lit;
     }
   }
+  if (sink) texel_trace_detail::last_granule = last_granule;
   const float visibility = static_cast<float>(lit) / 9.0f;
   return 1.0f - s.strength * (1.0f - visibility);
 }

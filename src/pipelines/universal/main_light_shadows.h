@@ -33,10 +33,17 @@ MainLightShadowSetup fit_main_light_shadow(glm::vec3 to_light, const Bounds& rec
 // What the forward functor needs to look the shadow map up.
 struct ShadowLookup {
   const Texture2D* map = nullptr;  // D32F depth in .x, sampled by texel fetch
+  // The map's level 0, read directly (9 texels per pixel; Texture2D::fetch's dispatch per
+  // texel cost more than the comparison itself); set with the map, see set_map.
+  Texture2D::TexelView texels;
   glm::mat4 world_to_shadow{1.0f};
   float depth_bias_world = 0.0f;   // receiver moved this far towards the light
   float normal_bias_world = 0.0f;  // and this far x (1 - N.L) along its normal (URP's biases)
   float strength = 1.0f;
+  void set_map(const Texture2D* shadow_map) {
+    map = shadow_map;
+    texels = shadow_map ? shadow_map->texel_view(0) : Texture2D::TexelView{};
+  }
 };
 
 // The light's visibility at a world position with unit normal n: the receiver-side form of

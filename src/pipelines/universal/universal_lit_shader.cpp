@@ -72,7 +72,7 @@ DrawFunctors forward_functors(const DrawContext& ctx) {
   if (shadow_map) {
     const glm::vec4 shadow_params = props.get_vector("_MainLightShadowParams", glm::vec4(0, 0, 1, 0));
     const auto it = props.matrices.find("_MainLightWorldToShadow");
-    p.shadow.map = shadow_map.get();
+    p.shadow.set_map(shadow_map.get());
     p.shadow.world_to_shadow = it != props.matrices.end() ? it->second : glm::mat4(1.0f);
     p.shadow.depth_bias_world = shadow_params.x;
     p.shadow.normal_bias_world = shadow_params.y;

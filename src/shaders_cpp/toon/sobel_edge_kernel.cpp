@@ -124,24 +124,57 @@ HWY_INLINE VF decode_normal(DF df, VF stored, NormalEncoding encoding) {
   return hn::Sub(hn::Mul(stored, hn::Set(df, 2.0f)), hn::Set(df, 1.0f));
 }
 
+// The RGBA floats of texels [x0, x0 + count) of row y, or null for 8-bit texels (decoded one
+// at a time): Float32 texels in place; a surface view's pixels decoded into `row` with
+// decode_pixels, the values the view's load() gives, on SIMD lanes.
+const float* float_row(const Texture2D::TexelView& view, int x0, int y, int count,
+                       glm::vec4* row) {
+  const size_t first = static_cast<size_t>(y) * view.width + x0;
+  if (view.texels32f) return view.texels32f + first * 4;
+  if (!view.surface_bytes) return nullptr;
+  decode_pixels(view.surface_format, view.surface_bytes + first * view.memory_bytes_per_texel,
+                count, row);
+  return &row[0].x;
+}
+
 void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelView* normal,
                       NormalEncoding encoding, const DepthDecode& decode, NeighbourhoodGrid& grid) {
   const DF df;
   const size_t n = hn::Lanes(df);
   const size_t width = static_cast<size_t>(grid.width);
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
+  glm::vec4 row_texels[kMaxGridTexels];
   for (int row = 0; row < grid.height; ++row) {
     const int y = grid.y0 + row;
     const size_t cell0 = static_cast<size_t>(row) * width;
     size_t i = 0;
-    // Float32 texels on lanes (RGBA interleaved: the x channel is every fourth float); 8-bit
+    // Float texels on lanes (RGBA interleaved: the x channel is every fourth float); 8-bit
     // texels, and the tail of a row, decode one at a time with the same operations.
-    if (depth.texels32f) {
-      const float* src = depth.texels32f + (static_cast<size_t>(y) * depth.width + grid.x0) * 4;
+    if (depth.surface_bytes && (depth.surface_format == PixelFormat::D32_FLOAT ||
+                                depth.surface_format == PixelFormat::R32_FLOAT)) {
+      // One float per texel, stored as is: decode_pixel gives (d, 0, 0, 1) with d these bits.
+      const uint8_t* src = depth.surface_bytes + (static_cast<size_t>(y) * depth.width + grid.x0) * 4;
+      for (; i + n <= width; i += n) {
+        const VF d = hn::LoadU(df, reinterpret_cast<const float*>(src + 4 * i));
+        hn::StoreU(d, df, grid.depth + cell0 + i);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+      }
+      for (; i < width; ++i) {
+        float d;
+        std::memcpy(&d, src + 4 * i, sizeof d);
+        grid.depth[cell0 + i] = d;
+        grid.linear_z[cell0 + i] = linearize_one(d, decode);
+      }
+    } else if (const float* src = float_row(depth, grid.x0, y, grid.width, row_texels)) {
       for (; i + n <= width; i += n) {
         VF d, g, b, a;
         hn::LoadInterleaved4(df, src + i * 4, d, g, b, a);
         hn::StoreU(d, df, grid.depth + cell0 + i);
         hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+      }
+      for (; i < width; ++i) {
+        grid.depth[cell0 + i] = src[i * 4];
+        grid.linear_z[cell0 + i] = linearize_one(src[i * 4], decode);
       }
     }
     for (; i < width; ++i) {
@@ -151,14 +184,18 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
     }
     if (!normal) continue;
     i = 0;
-    if (normal->texels32f) {
-      const float* src = normal->texels32f + (static_cast<size_t>(y) * normal->width + grid.x0) * 4;
+    if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
       for (; i + n <= width; i += n) {
         VF nx, ny, nz, nw;
         hn::LoadInterleaved4(df, src + i * 4, nx, ny, nz, nw);
         hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + i);
         hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + i);
         hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + i);
+      }
+      for (; i < width; ++i) {
+        const glm::vec4 texel(src[i * 4], src[i * 4 + 1], src[i * 4 + 2], src[i * 4 + 3]);
+        const glm::vec3 nv = decode_view_normal(texel, encoding);
+        for (int c = 0; c < 3; ++c) grid.normal[c][cell0 + i] = nv[c];
       }
     }
     for (; i < width; ++i) {

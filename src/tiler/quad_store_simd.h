@@ -1,0 +1,17 @@
+// The write-back of whole shaded quads on SIMD lanes: a batch's structure-of-arrays outputs
+// interleaved into a tile plane of RGBA values, two pixels of a quad row per store.
+#pragma once
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace ontile {
+
+// For each quad i < quad_count: fragments first_fragment[i] .. first_fragment[i] + 3 (quad
+// lanes (0,0), (1,0), (0,1), (1,1)) go to plane pixels pixel[i], pixel[i] + 1,
+// pixel[i] + row_pixels and pixel[i] + row_pixels + 1; channels[c][f] is channel c of fragment
+// f. A copy: the plane receives exactly the output values.
+void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
+                      const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane);
+
+}  // namespace ontile
