@@ -190,7 +190,6 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     }
     for (int r : reads_of(p)) needed[r] = true;
   }
-  std::reverse(out.decisions.begin(), out.decisions.end());
 
   // Native passes: one per live pass, or grown while the merge rules hold.
   std::vector<NativeBuilder> builders;
@@ -281,6 +280,14 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     out.native_passes.push_back(std::move(native));
   }
   for (int r : g.outputs) out.resource_backed[r] = true;
+  // Decisions in pass order, each pass's own decision before its attachments'.
+  auto order = [&](const GraphDecision& d) {
+    size_t pass = 0;
+    while (pass < pass_count && g.passes[pass].name != d.pass) ++pass;
+    return std::pair(pass, !d.resource.empty());
+  };
+  std::stable_sort(out.decisions.begin(), out.decisions.end(),
+                   [&](const GraphDecision& a, const GraphDecision& b) { return order(a) < order(b); });
   return out;
 }
 

@@ -137,7 +137,7 @@ TEST(RenderGraphCompiler, EachNotMergedReason) {
     a.depth = GraphWrite{depth, kClear, kStore};
     b.pass("b").colors = {{b.resource("y"), kClear, kStore}};
     k.shape(b, b.g.passes[1], x);
-    b.g.outputs = {x};
+    b.g.outputs = {x, depth};  // "a" stays live whatever "b" overwrites
     for (const GraphWrite& w : b.g.passes[1].colors) b.g.outputs.push_back(w.resource);
     if (b.g.passes[1].depth) b.g.outputs.push_back(b.g.passes[1].depth->resource);
     const CompiledGraph c = compile(b.g, RenderGraphMode::Merge);
