@@ -15,7 +15,8 @@ const char* graph_decision_name(GraphReason reason) {
     case GraphReason::SampleCountDiffers:
     case GraphReason::DepthDiffers:
     case GraphReason::ClearsHeldAttachment:
-    case GraphReason::TileBudgetExceeded: return "not merged";
+    case GraphReason::TileBudgetExceeded:
+    case GraphReason::ExternalPass: return "not merged";
     case GraphReason::CulledUnread:
     case GraphReason::CulledUnreadAttachment: return "culled";
     case GraphReason::StoredReadLater:
@@ -38,6 +39,7 @@ const char* graph_reason_name(GraphReason reason) {
     case GraphReason::DepthDiffers: return "depth attachment differs";
     case GraphReason::ClearsHeldAttachment: return "clears an attachment an earlier subpass holds";
     case GraphReason::TileBudgetExceeded: return "tile budget exceeded";
+    case GraphReason::ExternalPass: return "external pass";
     case GraphReason::CulledUnread: return "unread";
     case GraphReason::CulledUnreadAttachment: return "attachment unread";
     case GraphReason::StoredReadLater: return "read later";
@@ -63,7 +65,8 @@ nlohmann::json graph_report_json(const GraphReport& report) {
       attachments.push_back({{"resource", a.resource}, {"load", a.load}, {"store", a.store},
                              {"memoryless", a.memoryless}});
     }
-    native.push_back({{"name", p.name}, {"subpasses", p.subpasses}, {"attachments", attachments}});
+    native.push_back({{"name", p.name}, {"subpasses", p.subpasses}, {"attachments", attachments},
+                      {"external", p.external}});
   }
   nlohmann::json decisions = nlohmann::json::array();
   for (const GraphDecision& d : report.decisions) {
@@ -81,7 +84,7 @@ std::string graph_report_table(const GraphReport& report) {
   out << "render graph (" << report.mode << "): " << report.passes.size() << " passes as written, "
       << report.native_passes.size() << " render passes executed\n";
   for (const GraphReport::ExecutedPass& p : report.native_passes) {
-    out << "  " << p.name << ":";
+    out << "  " << p.name << (p.external ? " (external)" : "") << ":";
     for (const auto& a : p.attachments) {
       out << " " << a.resource << " (" << a.load << "/" << a.store << (a.memoryless ? ", memoryless" : "") << ")";
     }

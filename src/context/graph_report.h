@@ -18,6 +18,7 @@ enum class GraphReason {
   DepthDiffers,            // not merged: another depth attachment (one per native pass)
   ClearsHeldAttachment,    // not merged: clears an attachment the native pass already holds
   TileBudgetExceeded,      // not merged: the attachments would not fit tile memory
+  ExternalPass,            // not merged: an external pass records its own render passes
   CulledUnread,            // culled: no later pass or output reads what it writes
   CulledUnreadAttachment,  // culled: nothing reads this attachment (store: dont-care)
   StoredReadLater,         // stored: a later render pass reads it
@@ -47,6 +48,7 @@ struct GraphReport {
   struct ExecutedPass {
     std::string name;
     std::vector<std::string> subpasses;  // graph passes, in order
+    bool external = false;
     struct Attachment {
       std::string resource, load, store;
       bool memoryless = false;

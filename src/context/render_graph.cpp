@@ -48,6 +48,7 @@ GraphReport graph_report(const GraphDecl& graph, const CompiledGraph& compiled) 
   for (const NativePass& n : compiled.native_passes) {
     GraphReport::ExecutedPass e;
     e.name = n.name;
+    e.external = n.external;
     for (const NativeSubpass& s : n.subpasses) e.subpasses.push_back(graph.passes[s.pass].name);
     for (const NativeAttachment& a : n.attachments) {
       e.attachments.push_back({graph.resources[a.resource].name, load_name(a.load), store_name(a.store), a.memoryless});
@@ -129,7 +130,15 @@ GraphPassBuilder RenderGraph::add_pass(const std::string& name) {
   p.name = name;
   decl_.passes.push_back(std::move(p));
   records_.emplace_back();
+  external_records_.emplace_back();
   return GraphPassBuilder(*this, static_cast<int>(decl_.passes.size()) - 1);
+}
+
+GraphPassBuilder RenderGraph::add_external_pass(const std::string& name, std::function<void(RenderContext&)> record) {
+  GraphPassBuilder builder = add_pass(name);
+  decl_.passes.back().external = true;
+  external_records_.back() = std::move(record);
+  return builder;
 }
 
 void RenderGraph::mark_output(GraphResource r) { decl_.outputs.push_back(r.index); }
@@ -145,9 +154,14 @@ void RenderGraph::execute(RenderContext& context) {
   for (size_t r = 0; r < decl_.resources.size(); ++r) {
     if (!compiled_.resource_backed[r]) continue;
     const GraphResourceDesc& d = decl_.resources[r];
-    surfaces_[r] = context.create_surface(d.name, d.format, d.width_px, d.height_px, d.samples);
+    surfaces_[r] = context.create_surface(d.surface_name.empty() ? d.name : d.surface_name, d.format, d.width_px,
+                                          d.height_px, d.samples);
   }
   for (const NativePass& native : compiled_.native_passes) {
+    if (native.external) {
+      if (external_records_[native.subpasses[0].pass]) external_records_[native.subpasses[0].pass](context);
+      continue;
+    }
     std::vector<AttachmentDesc> attachments;
     for (const NativeAttachment& a : native.attachments) {
       const GraphResourceDesc& d = decl_.resources[a.resource];

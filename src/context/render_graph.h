@@ -73,6 +73,10 @@ class RenderGraph {
  public:
   GraphResource create(const GraphResourceDesc& desc);
   GraphPassBuilder add_pass(const std::string& name);
+  // A pass that records straight into the context (its own render passes, blits, renderer
+  // features: Unity's unsafe pass). Never culled or merged; declare what it reads and writes
+  // on the builder so that the compiler keeps those resources in memory.
+  GraphPassBuilder add_external_pass(const std::string& name, std::function<void(RenderContext&)> record);
   // A final output of the frame: read after the graph, so always stored.
   void mark_output(GraphResource r);
 
@@ -89,6 +93,7 @@ class RenderGraph {
   friend class GraphPassBuilder;
   GraphDecl decl_;
   std::vector<std::function<void(GraphPassRecorder&)>> records_;
+  std::vector<std::function<void(RenderContext&)>> external_records_;
   std::vector<Surface*> surfaces_;
   CompiledGraph compiled_;
 };

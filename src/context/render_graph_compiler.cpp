@@ -50,6 +50,12 @@ void validate(const GraphDecl& g) {
   }
   for (const GraphPassDecl& p : g.passes) {
     const std::vector<GraphWrite> attachments = attachments_of(p);
+    for (int r : p.own_pixel_reads) check(r, "pass '" + p.name + "' own-pixel read");
+    for (int r : p.texture_reads) check(r, "pass '" + p.name + "' texture read");
+    if (p.external) {
+      for (const GraphWrite& w : attachments) check(w.resource, "external pass '" + p.name + "'");
+      continue;
+    }
     if (attachments.empty()) throw Error("render graph: pass '" + p.name + "' renders to no attachment");
     std::vector<int> seen;
     for (const GraphWrite& w : attachments) {
@@ -65,10 +71,23 @@ void validate(const GraphDecl& g) {
         throw Error("render graph: pass '" + p.name + "' mixes attachment sizes or sample counts");
       }
     }
-    for (int r : p.own_pixel_reads) check(r, "pass '" + p.name + "' own-pixel read");
-    for (int r : p.texture_reads) check(r, "pass '" + p.name + "' texture read");
   }
   for (int r : g.outputs) check(r, "output");
+  // A memoryless resource has no memory to load from, store to or sample.
+  auto memoryless_use = [&](int r, const std::string& how) {
+    if (g.resources[r].memoryless) throw Error("render graph: memoryless resource '" + g.resources[r].name + "' " + how);
+  };
+  for (const GraphPassDecl& p : g.passes) {
+    for (const GraphWrite& w : attachments_of(p)) {
+      if (w.load == LoadAction::Load) memoryless_use(w.resource, "is loaded by pass '" + p.name + "'");
+      if (w.store != StoreAction::DontCare) memoryless_use(w.resource, "is stored by pass '" + p.name + "'");
+    }
+    for (int r : p.texture_reads) memoryless_use(r, "is sampled by pass '" + p.name + "'");
+    if (p.external) {
+      for (const GraphWrite& w : attachments_of(p)) memoryless_use(w.resource, "is used by external pass '" + p.name + "'");
+    }
+  }
+  for (int r : g.outputs) memoryless_use(r, "is an output");
 }
 
 // The native pass being grown, with what the merge rules need to know about it.
@@ -78,10 +97,12 @@ struct NativeBuilder {
   std::vector<int> written;   // resources some subpass wrote
   std::vector<int> sampled;   // resources some subpass reads from memory
   int depth = -1;
+  bool external = false;
 };
 
 std::optional<GraphReason> merge_blocker(const GraphDecl& g, const NativeBuilder& n, const GraphPassDecl& p,
                                          const TilerConfig& tiler) {
+  if (p.external || n.external) return GraphReason::ExternalPass;
   const GraphResourceDesc& mine = g.resources[attachments_of(p)[0].resource];
   const GraphResourceDesc& theirs = g.resources[n.attached[0]];
   if (mine.width_px != theirs.width_px || mine.height_px != theirs.height_px) return GraphReason::SizeDiffers;
@@ -117,6 +138,10 @@ std::optional<GraphReason> merge_blocker(const GraphDecl& g, const NativeBuilder
 
 void add_to_native(NativeBuilder& n, const GraphPassDecl& p, int pass_index) {
   n.passes.push_back(pass_index);
+  if (p.external) {
+    n.external = true;
+    return;
+  }
   for (int r : p.own_pixel_reads) {
     if (!contains(n.attached, r)) n.sampled.push_back(r);  // not on tile: read from memory
   }
@@ -178,7 +203,7 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     const GraphPassDecl& p = g.passes[i];
     needed_after[i] = needed;
     const std::vector<int> writes = writes_of(p);
-    const bool live = mode == RenderGraphMode::Off ||
+    const bool live = mode == RenderGraphMode::Off || p.external ||
                       std::any_of(writes.begin(), writes.end(), [&](int r) { return needed[r]; });
     if (!live) {
       out.pass_culled[i] = true;
@@ -211,6 +236,17 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
   std::vector<bool> written_before(resource_count, false);
   for (const NativeBuilder& b : builders) {
     NativePass native;
+    if (b.external) {
+      // What it declares must be in memory; anything it writes counts as written before.
+      const GraphPassDecl& p = g.passes[b.passes[0]];
+      native.name = p.name;
+      native.external = true;
+      native.subpasses.push_back({b.passes[0], {}, {}, {}, false});
+      for (int r : reads_of(p)) out.resource_backed[r] = true;
+      for (const GraphWrite& w : attachments_of(p)) out.resource_backed[w.resource] = written_before[w.resource] = true;
+      out.native_passes.push_back(std::move(native));
+      continue;
+    }
     const GraphResourceDesc& size = g.resources[b.attached[0]];
     native.width_px = size.width_px;
     native.height_px = size.height_px;
@@ -226,6 +262,10 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
           sub.inputs.push_back(a);
           sub.inputs_on_tile.push_back(r);
         } else {
+          if (g.resources[r].memoryless) {
+            throw Error("render graph: pass '" + p.name + "' reads memoryless '" + g.resources[r].name +
+                        "' outside the render pass that holds it");
+          }
           out.resource_backed[r] = true;
         }
       }
@@ -261,8 +301,10 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     const std::string& last_name = g.passes[b.passes.back()].name;
     for (NativeAttachment& a : native.attachments) {
       const std::string& resource_name = g.resources[a.resource].name;
+      bool dropped = false;
       if (mode == RenderGraphMode::Cull && !later[a.resource] && a.store == StoreAction::Store) {
         a.store = StoreAction::DontCare;
+        dropped = true;
         out.decisions.push_back({last_name, resource_name, GraphReason::CulledUnreadAttachment});
       } else if (mode == RenderGraphMode::Merge) {
         a.store = later[a.resource] ? StoreAction::Store : StoreAction::DontCare;
@@ -273,7 +315,10 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
         }
         out.decisions.push_back({last_name, resource_name, reason});
       }
-      a.memoryless = a.load != LoadAction::Load && a.store == StoreAction::DontCare;
+      // As written, only what the author declared memoryless is; merge (and cull, for the
+      // stores it drops) leaves out of memory whatever is neither loaded nor stored.
+      const bool unused_in_memory = a.load != LoadAction::Load && a.store == StoreAction::DontCare;
+      a.memoryless = g.resources[a.resource].memoryless || (unused_in_memory && (mode == RenderGraphMode::Merge || dropped));
       if (!a.memoryless) out.resource_backed[a.resource] = true;
     }
     for (int r : b.written) written_before[r] = true;

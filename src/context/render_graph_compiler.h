@@ -28,6 +28,10 @@ struct GraphResourceDesc {
   int width_px = 0, height_px = 0;
   int samples = 1;
   glm::vec4 clear_value{0.0f};  // depth resources use clear_value.x
+  std::string surface_name = {};  // the backing surface's name when it differs (blits name passes by it)
+  // Never backed by memory (Vulkan's lazily allocated, Metal's memoryless storage): only for
+  // attachments that are neither loaded, stored nor sampled. Merge finds these by itself.
+  bool memoryless = false;
 };
 
 // An attachment a pass renders to, with the load/store actions its author gave.
@@ -44,6 +48,9 @@ struct GraphPassDecl {
   bool depth_read_only = false;
   std::vector<int> own_pixel_reads;  // read at the fragment's own pixel (input-attachment compatible)
   std::vector<int> texture_reads;    // sampled anywhere (needs the resource in memory)
+  // Records its own render passes, blits or features into the context (Unity's unsafe pass):
+  // never culled or merged; what it reads and writes is what it declares.
+  bool external = false;
 };
 
 struct GraphDecl {
@@ -70,6 +77,7 @@ struct NativeSubpass {
 
 struct NativePass {
   std::string name;
+  bool external = false;  // an external pass: runs its own commands, no attachments here
   int width_px = 0, height_px = 0, samples = 1;
   std::vector<NativeAttachment> attachments;
   int depth_index = -1;

@@ -234,6 +234,53 @@ TEST(RenderGraphCompiler, DepthJoinsAndOtherSubpassesKeepItReadOnly) {
   EXPECT_TRUE(n.attachments[1].memoryless);
 }
 
+TEST(RenderGraphCompiler, ExternalPassesRunAlwaysBreakMergingAndKeepWhatTheyReadInMemory) {
+  GraphBuilder b;
+  const int x = b.resource("x"), y = b.resource("y");
+  b.pass("a").colors = {{x, kClear, kStore}};
+  GraphPassDecl& external = b.pass("feature");
+  external.external = true;
+  external.texture_reads = {x};
+  GraphPassDecl& p = b.pass("b");
+  p.colors = {{y, kClear, kStore}};
+  p.own_pixel_reads = {x};
+  b.pass("side effects only").external = true;
+  b.g.outputs = {y};
+  const CompiledGraph c = compile(b.g, RenderGraphMode::Merge);
+  EXPECT_EQ(c.pass_culled, (std::vector<bool>{false, false, false, false}));
+  ASSERT_EQ(c.native_passes.size(), 4u);
+  EXPECT_TRUE(c.native_passes[1].external);
+  EXPECT_TRUE(c.native_passes[1].attachments.empty());
+  EXPECT_EQ(reasons_for(c, "feature"), std::vector<GraphReason>{GraphReason::ExternalPass});
+  EXPECT_EQ(reasons_for(c, "b"), std::vector<GraphReason>{GraphReason::ExternalPass});
+  EXPECT_EQ(reasons_for(c, "a", "x"), (std::vector<GraphReason>{GraphReason::LoadCleared, GraphReason::StoredReadLater}));
+  EXPECT_TRUE(c.resource_backed[x]);
+}
+
+TEST(RenderGraphCompiler, AsWrittenOnlyDeclaredMemorylessResourcesStayOutOfMemory) {
+  GraphBuilder b;
+  const int x = b.resource("x"), scratch = b.resource("scratch depth", PixelFormat::D32_FLOAT),
+            lazy = b.resource("lazy depth", PixelFormat::D32_FLOAT);
+  b.g.resources[lazy].memoryless = true;
+  GraphPassDecl& a = b.pass("a");
+  a.colors = {{x, kClear, kStore}};
+  a.depth = GraphWrite{scratch, kClear, kDontCare};
+  GraphPassDecl& p = b.pass("b");
+  p.colors = {{x, kLoad, kStore}};
+  p.depth = GraphWrite{lazy, kClear, kDontCare};
+  b.g.outputs = {x};
+  const CompiledGraph off = compile(b.g, RenderGraphMode::Off);
+  EXPECT_FALSE(off.native_passes[0].attachments[1].memoryless) << "a surface the author did not give up";
+  EXPECT_TRUE(off.resource_backed[scratch]);
+  EXPECT_TRUE(off.native_passes[1].attachments[1].memoryless);
+  EXPECT_FALSE(off.resource_backed[lazy]);
+  const CompiledGraph merged = compile(b.g, RenderGraphMode::Merge);
+  EXPECT_TRUE(merged.native_passes[0].attachments[1].memoryless);
+  EXPECT_FALSE(merged.resource_backed[scratch]);
+  b.g.passes[1].depth->store = kStore;
+  EXPECT_THROW(compile(b.g, RenderGraphMode::Off), Error) << "a memoryless resource cannot be stored";
+}
+
 TEST(RenderGraphCompiler, InvalidGraphsAreErrors) {
   GraphBuilder b;
   const int x = b.resource("x");

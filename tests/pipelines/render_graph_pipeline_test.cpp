@@ -1,5 +1,6 @@
 // Pipelines written as render graphs: deferred-classic merged moves exactly deferred-subpass's
 // bytes with the same image; cartoon-multipass merges what its reads allow and reports why;
+// universal merges its prepass into the forward pass;
 // images are bit-identical across --render-graph off, cull and merge; a culled pass costs
 // nothing.
 #include <gtest/gtest.h>
@@ -64,7 +65,7 @@ TEST(RenderGraphPipelines, DeferredClassicMergedMovesDeferredSubpassBytes) {
 
 TEST(RenderGraphPipelines, ImagesAreBitIdenticalAcrossModes) {
   const Scene scene = load_gltf(kDemo);
-  for (const std::string pipeline : {"deferred-classic", "cartoon-multipass"}) {
+  for (const std::string pipeline : {"deferred-classic", "cartoon-multipass", "universal"}) {
     const RenderedFrame off = render(scene, pipeline, RenderGraphMode::Off);
     EXPECT_FALSE(off.outputs.report.graph) << pipeline << ": off reports as before, no graph section";
     for (RenderGraphMode mode : {RenderGraphMode::Cull, RenderGraphMode::Merge}) {
@@ -117,6 +118,29 @@ TEST(RenderGraphPipelines, CartoonMultipassMergesWhatItsReadsAllow) {
     }
   }
   EXPECT_TRUE(stored_reason_in_json) << json["graph"].dump(2);
+}
+
+TEST(RenderGraphPipelines, UniversalMergesItsPrepassIntoTheForwardPass) {
+  const Scene scene = load_gltf(kDemo);
+  const RenderedFrame off = render(scene, "universal", RenderGraphMode::Off);
+  const RenderedFrame merged = render(scene, "universal", RenderGraphMode::Merge);
+  ASSERT_TRUE(merged.outputs.report.graph);
+  const GraphReport& g = *merged.outputs.report.graph;
+  std::vector<std::pair<std::string, GraphReason>> pass_decisions;
+  for (const GraphDecision& d : g.decisions) {
+    if (d.resource.empty()) pass_decisions.emplace_back(d.pass, d.reason);
+  }
+  EXPECT_EQ(pass_decisions, (std::vector<std::pair<std::string, GraphReason>>{
+                                {"DepthNormalPrepass", GraphReason::SizeDiffers},
+                                {"ForwardRendering", GraphReason::Merged},
+                                {"CopyColor", GraphReason::ExternalPass},
+                                {"ScreenSpaceOutline", GraphReason::ExternalPass},
+                                {"PostProcessing", GraphReason::ExternalPass}}));
+  // The forward pass no longer loads the prepass depth; everything else moves the same bytes.
+  std::map<std::string, uint64_t> expected = off.outputs.report.bytes_by_category();
+  expected["attachment_load"] -= 200u * 112u * 4u;
+  EXPECT_EQ(merged.outputs.report.bytes_by_category(), expected);
+  EXPECT_EQ(image(merged), image(off));
 }
 
 TEST(RenderGraphPipelines, ACulledPassCostsNothing) {

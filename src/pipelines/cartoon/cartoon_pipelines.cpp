@@ -39,8 +39,8 @@ AttachmentDesc transient_depth() {
 FrameOutputs render_multipass(RenderContext& ctx, const FrameInputs& in, const ToonShaderLibrary& library,
                               const CullingResults& culling, const CameraMatrices& camera, PixelFormat normal_format) {
   RenderGraph graph;
-  auto target = [&](const char* name, PixelFormat format, glm::vec4 clear = kNoClear) {
-    return graph.create({name, format, in.width_px, in.height_px, 1, clear});
+  auto target = [&](const char* name, PixelFormat format, glm::vec4 clear = kNoClear, bool memoryless = false) {
+    return graph.create({name, format, in.width_px, in.height_px, 1, clear, {}, memoryless});
   };
   const GraphResource color = target("color", PixelFormat::RGBA8_SRGB);
   const GraphResource normals = target("normals", normal_format);
@@ -52,7 +52,8 @@ FrameOutputs render_multipass(RenderContext& ctx, const FrameInputs& in, const T
                         Step{"toon border", border, toon::kBorder}}) {
     graph.add_pass(s.pass)
         .write_color(s.output, LoadAction::Clear, StoreAction::Store)
-        .write_depth(target("depth", PixelFormat::D32_FLOAT, glm::vec4(1.0f)), LoadAction::Clear, StoreAction::DontCare)
+        .write_depth(target("depth", PixelFormat::D32_FLOAT, glm::vec4(1.0f), true), LoadAction::Clear,
+                     StoreAction::DontCare)
         .record([&, s](GraphPassRecorder& r) {
           r.draw_renderers(culling, {{s.light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
           if (s.output.index == color.index) r.draw_skybox(camera);
