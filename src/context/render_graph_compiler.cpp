@@ -187,19 +187,15 @@ RenderGraphMode parse_render_graph_mode(const std::string& name) {
   throw Error("render graph mode '" + name + "': expected off, cull or merge");
 }
 
-CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, const TilerConfig& tiler) {
-  validate(g);
-  const size_t pass_count = g.passes.size(), resource_count = g.resources.size();
-  CompiledGraph out;
-  out.mode = mode;
-  out.pass_culled.assign(pass_count, false);
-  out.resource_backed.assign(resource_count, false);
+namespace {
 
-  // Backwards from the outputs: which values are still read after each pass.
-  std::vector<std::vector<bool>> needed_after(pass_count);
-  std::vector<bool> needed(resource_count, false);
+// Backwards from the outputs (Filament's culling): which values are still read after each
+// pass; passes nothing needs are culled.
+std::vector<std::vector<bool>> cull_and_find_live_values(const GraphDecl& g, RenderGraphMode mode, CompiledGraph& out) {
+  std::vector<std::vector<bool>> needed_after(g.passes.size());
+  std::vector<bool> needed(g.resources.size(), false);
   for (int r : g.outputs) needed[r] = true;
-  for (size_t i = pass_count; i-- > 0;) {
+  for (size_t i = g.passes.size(); i-- > 0;) {
     const GraphPassDecl& p = g.passes[i];
     needed_after[i] = needed;
     const std::vector<int> writes = writes_of(p);
@@ -215,10 +211,14 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     }
     for (int r : reads_of(p)) needed[r] = true;
   }
+  return needed_after;
+}
 
-  // Native passes: one per live pass, or grown while the merge rules hold.
+// One native pass per live pass, or (merge) grown while the merge rules hold.
+std::vector<NativeBuilder> group_passes(const GraphDecl& g, RenderGraphMode mode, const TilerConfig& tiler,
+                                        CompiledGraph& out) {
   std::vector<NativeBuilder> builders;
-  for (size_t i = 0; i < pass_count; ++i) {
+  for (size_t i = 0; i < g.passes.size(); ++i) {
     if (out.pass_culled[i]) continue;
     const GraphPassDecl& p = g.passes[i];
     if (mode == RenderGraphMode::Merge && !builders.empty()) {
@@ -232,95 +232,125 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
     builders.emplace_back();
     add_to_native(builders.back(), p, static_cast<int>(i));
   }
+  return builders;
+}
 
-  std::vector<bool> written_before(resource_count, false);
-  for (const NativeBuilder& b : builders) {
-    NativePass native;
+NativePass external_pass(const GraphDecl& g, const NativeBuilder& b, std::vector<bool>& written_before,
+                         CompiledGraph& out) {
+  // What it declares must be in memory; anything it writes counts as written before.
+  const GraphPassDecl& p = g.passes[b.passes[0]];
+  NativePass native;
+  native.name = p.name;
+  native.external = true;
+  native.subpasses.push_back({b.passes[0], {}, {}, {}, false});
+  for (int r : reads_of(p)) out.resource_backed[r] = true;
+  for (const GraphWrite& w : attachments_of(p)) out.resource_backed[w.resource] = written_before[w.resource] = true;
+  return native;
+}
+
+// Attachments in order of first use with their load actions, and each subpass's outputs and
+// input attachments.
+NativePass subpasses_and_loads(const GraphDecl& g, RenderGraphMode mode, const NativeBuilder& b,
+                               const std::vector<bool>& written_before, CompiledGraph& out) {
+  NativePass native;
+  const GraphResourceDesc& size = g.resources[b.attached[0]];
+  native.width_px = size.width_px;
+  native.height_px = size.height_px;
+  native.samples = size.samples;
+  for (int pass_index : b.passes) {
+    const GraphPassDecl& p = g.passes[pass_index];
+    native.name += (native.name.empty() ? "" : " + ") + p.name;
+    NativeSubpass sub;
+    sub.pass = pass_index;
+    for (int r : p.own_pixel_reads) {
+      const int a = attachment_index(native, r);
+      if (a >= 0) {
+        sub.inputs.push_back(a);
+        sub.inputs_on_tile.push_back(r);
+        continue;
+      }
+      if (g.resources[r].memoryless) {
+        throw Error("render graph: pass '" + p.name + "' reads memoryless '" + g.resources[r].name +
+                    "' outside the render pass that holds it");
+      }
+      out.resource_backed[r] = true;
+    }
+    for (int r : p.texture_reads) out.resource_backed[r] = true;
+    for (const GraphWrite& w : attachments_of(p)) {
+      int a = attachment_index(native, w.resource);
+      if (a < 0) {
+        a = static_cast<int>(native.attachments.size());
+        NativeAttachment att{w.resource, w.load, w.store, false};
+        if (mode == RenderGraphMode::Merge) {
+          GraphReason load_reason = GraphReason::LoadKept;
+          if (!written_before[w.resource]) {
+            att.load = w.load == LoadAction::DontCare ? LoadAction::DontCare : LoadAction::Clear;
+            load_reason = att.load == LoadAction::Clear ? GraphReason::LoadCleared : GraphReason::LoadDontCare;
+          }
+          out.decisions.push_back({p.name, g.resources[w.resource].name, load_reason});
+        }
+        native.attachments.push_back(att);
+      }
+      if (p.depth && w.resource == p.depth->resource) native.depth_index = a;
+    }
+    for (const GraphWrite& w : p.colors) sub.color_outputs.push_back(attachment_index(native, w.resource));
+    native.subpasses.push_back(sub);
+  }
+  // Subpasses that leave depth alone keep it read-only (one depth per render pass here, so
+  // the others see it but may not write it).
+  for (NativeSubpass& sub : native.subpasses) {
+    const GraphPassDecl& p = g.passes[sub.pass];
+    sub.depth_read_only = native.depth_index >= 0 && (!p.depth || p.depth_read_only);
+  }
+  return native;
+}
+
+// Store actions from what later passes or the outputs still read, and which attachments stay
+// out of memory.
+void stores_and_memory(const GraphDecl& g, RenderGraphMode mode, const NativeBuilder& b, const std::vector<bool>& later,
+                       NativePass& native, CompiledGraph& out) {
+  const std::string& last_name = g.passes[b.passes.back()].name;
+  for (NativeAttachment& a : native.attachments) {
+    const std::string& resource_name = g.resources[a.resource].name;
+    bool dropped = false;
+    if (mode == RenderGraphMode::Cull && !later[a.resource] && a.store == StoreAction::Store) {
+      a.store = StoreAction::DontCare;
+      dropped = true;
+      out.decisions.push_back({last_name, resource_name, GraphReason::CulledUnreadAttachment});
+    } else if (mode == RenderGraphMode::Merge) {
+      a.store = later[a.resource] ? StoreAction::Store : StoreAction::DontCare;
+      GraphReason reason = GraphReason::TransientNotReadLater;
+      if (later[a.resource]) {
+        reason = read_by_later_pass(g, out.pass_culled, b.passes.back(), a.resource) ? GraphReason::StoredReadLater
+                                                                                     : GraphReason::StoredOutput;
+      }
+      out.decisions.push_back({last_name, resource_name, reason});
+    }
+    // As written, only what the author declared memoryless is; merge (and cull, for the
+    // stores it drops) leaves out of memory whatever is neither loaded nor stored.
+    const bool unused_in_memory = a.load != LoadAction::Load && a.store == StoreAction::DontCare;
+    a.memoryless = g.resources[a.resource].memoryless || (unused_in_memory && (mode == RenderGraphMode::Merge || dropped));
+    if (!a.memoryless) out.resource_backed[a.resource] = true;
+  }
+}
+
+}  // namespace
+
+CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, const TilerConfig& tiler) {
+  validate(g);
+  CompiledGraph out;
+  out.mode = mode;
+  out.pass_culled.assign(g.passes.size(), false);
+  out.resource_backed.assign(g.resources.size(), false);
+  const std::vector<std::vector<bool>> needed_after = cull_and_find_live_values(g, mode, out);
+  std::vector<bool> written_before(g.resources.size(), false);
+  for (const NativeBuilder& b : group_passes(g, mode, tiler, out)) {
     if (b.external) {
-      // What it declares must be in memory; anything it writes counts as written before.
-      const GraphPassDecl& p = g.passes[b.passes[0]];
-      native.name = p.name;
-      native.external = true;
-      native.subpasses.push_back({b.passes[0], {}, {}, {}, false});
-      for (int r : reads_of(p)) out.resource_backed[r] = true;
-      for (const GraphWrite& w : attachments_of(p)) out.resource_backed[w.resource] = written_before[w.resource] = true;
-      out.native_passes.push_back(std::move(native));
+      out.native_passes.push_back(external_pass(g, b, written_before, out));
       continue;
     }
-    const GraphResourceDesc& size = g.resources[b.attached[0]];
-    native.width_px = size.width_px;
-    native.height_px = size.height_px;
-    native.samples = size.samples;
-    for (int pass_index : b.passes) {
-      const GraphPassDecl& p = g.passes[pass_index];
-      native.name += (native.name.empty() ? "" : " + ") + p.name;
-      NativeSubpass sub;
-      sub.pass = pass_index;
-      for (int r : p.own_pixel_reads) {
-        const int a = attachment_index(native, r);
-        if (a >= 0) {
-          sub.inputs.push_back(a);
-          sub.inputs_on_tile.push_back(r);
-        } else {
-          if (g.resources[r].memoryless) {
-            throw Error("render graph: pass '" + p.name + "' reads memoryless '" + g.resources[r].name +
-                        "' outside the render pass that holds it");
-          }
-          out.resource_backed[r] = true;
-        }
-      }
-      for (int r : p.texture_reads) out.resource_backed[r] = true;
-      for (const GraphWrite& w : attachments_of(p)) {
-        int a = attachment_index(native, w.resource);
-        if (a < 0) {
-          a = static_cast<int>(native.attachments.size());
-          NativeAttachment att{w.resource, w.load, w.store, false};
-          if (mode == RenderGraphMode::Merge) {
-            GraphReason load_reason = GraphReason::LoadKept;
-            if (!written_before[w.resource]) {
-              att.load = w.load == LoadAction::DontCare ? LoadAction::DontCare : LoadAction::Clear;
-              load_reason = att.load == LoadAction::Clear ? GraphReason::LoadCleared : GraphReason::LoadDontCare;
-            }
-            out.decisions.push_back({p.name, g.resources[w.resource].name, load_reason});
-          }
-          native.attachments.push_back(att);
-        }
-        if (p.depth && w.resource == p.depth->resource) native.depth_index = a;
-      }
-      for (const GraphWrite& w : p.colors) sub.color_outputs.push_back(attachment_index(native, w.resource));
-      native.subpasses.push_back(sub);
-    }
-    // Subpasses that leave depth alone keep it read-only (Vulkan: one depth per render pass
-    // here, so the others see it but may not write it).
-    for (NativeSubpass& sub : native.subpasses) {
-      const GraphPassDecl& p = g.passes[sub.pass];
-      sub.depth_read_only = native.depth_index >= 0 && (!p.depth || p.depth_read_only);
-    }
-    // Store actions: what later passes or the outputs still read.
-    const std::vector<bool>& later = needed_after[b.passes.back()];
-    const std::string& last_name = g.passes[b.passes.back()].name;
-    for (NativeAttachment& a : native.attachments) {
-      const std::string& resource_name = g.resources[a.resource].name;
-      bool dropped = false;
-      if (mode == RenderGraphMode::Cull && !later[a.resource] && a.store == StoreAction::Store) {
-        a.store = StoreAction::DontCare;
-        dropped = true;
-        out.decisions.push_back({last_name, resource_name, GraphReason::CulledUnreadAttachment});
-      } else if (mode == RenderGraphMode::Merge) {
-        a.store = later[a.resource] ? StoreAction::Store : StoreAction::DontCare;
-        GraphReason reason = GraphReason::TransientNotReadLater;
-        if (later[a.resource]) {
-          reason = read_by_later_pass(g, out.pass_culled, b.passes.back(), a.resource) ? GraphReason::StoredReadLater
-                                                                                       : GraphReason::StoredOutput;
-        }
-        out.decisions.push_back({last_name, resource_name, reason});
-      }
-      // As written, only what the author declared memoryless is; merge (and cull, for the
-      // stores it drops) leaves out of memory whatever is neither loaded nor stored.
-      const bool unused_in_memory = a.load != LoadAction::Load && a.store == StoreAction::DontCare;
-      a.memoryless = g.resources[a.resource].memoryless || (unused_in_memory && (mode == RenderGraphMode::Merge || dropped));
-      if (!a.memoryless) out.resource_backed[a.resource] = true;
-    }
+    NativePass native = subpasses_and_loads(g, mode, b, written_before, out);
+    stores_and_memory(g, mode, b, needed_after[b.passes.back()], native, out);
     for (int r : b.written) written_before[r] = true;
     out.native_passes.push_back(std::move(native));
   }
@@ -328,7 +358,7 @@ CompiledGraph compile_render_graph(const GraphDecl& g, RenderGraphMode mode, con
   // Decisions in pass order, each pass's own decision before its attachments'.
   auto order = [&](const GraphDecision& d) {
     size_t pass = 0;
-    while (pass < pass_count && g.passes[pass].name != d.pass) ++pass;
+    while (pass < g.passes.size() && g.passes[pass].name != d.pass) ++pass;
     return std::pair(pass, !d.resource.empty());
   };
   std::stable_sort(out.decisions.begin(), out.decisions.end(),
