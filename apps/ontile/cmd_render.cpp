@@ -20,7 +20,8 @@ namespace ontile::cli {
 namespace {
 
 struct RenderOptions {
-  std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights;
+  std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
+              render_graph = "off";
   bool allow_outside_files = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
@@ -153,6 +154,7 @@ RenderSettings checked_settings(const RenderOptions& o) {
   settings.context.tiler.color_budget_bits_per_px = o.budget;
   settings.context.tiler.subpixel_bits = o.subpixel_bits;
   settings.context.tiler.architecture = o.arch == "imr" ? Architecture::Imr : Architecture::Tbdr;
+  settings.context.render_graph = parse_render_graph_mode(o.render_graph);
   settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
@@ -224,6 +226,11 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));
+  cmd->add_option("--render-graph", o->render_graph,
+                  "How pipelines written as render graphs run: off (passes as written, default), cull "
+                  "(unread passes and attachments removed) or merge (also subpasses, transient attachments, "
+                  "derived load/store; docs/render-graph.md)")
+      ->check(CLI::IsMember({"off", "cull", "merge"}));
   cmd->add_option("--parameter-cache-kib", o->parameter_cache_kib,
                   "Model an L2 (16-way, 64-byte lines) for parameter-buffer reads, in KiB (default 0: none)")
       ->check(CLI::Range(0, 65536));

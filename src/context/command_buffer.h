@@ -52,6 +52,7 @@ struct DrawSkybox { CameraMatrices camera; };
 struct DrawFullScreen {
   const RenderMaterial* material;
   std::string pass_name;
+  RenderTargetRef main_texture{};  // when valid: bound as "_MainTex" the way Blit binds its source
 };
 struct Blit {
   RenderTargetRef source, destination;

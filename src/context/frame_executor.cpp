@@ -13,6 +13,15 @@
 namespace ontile {
 namespace {
 
+// A blit's source: "_MainTex", clamped, without mipmaps.
+PropertyBlock blit_source_properties(const RenderTargetRef& source) {
+  PropertyBlock extra;
+  extra.textures["_MainTex"] = TextureBinding{nullptr, source, SamplerDesc{}};
+  extra.textures["_MainTex"].sampler.mipmap_mode = MipmapMode::None;
+  extra.textures["_MainTex"].sampler.wrap_u = extra.textures["_MainTex"].sampler.wrap_v = WrapMode::ClampToEdge;
+  return extra;
+}
+
 int thread_count(const ContextConfig& config) {
   return config.threads > 0 ? config.threads
                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -342,7 +351,9 @@ void FrameExecutor::operator()(const op::DrawFullScreen& c) {
   if (!pass) {
     throw Error("draw_full_screen: shader '" + c.material->shader->name() + "' has no pass '" + c.pass_name + "'");
   }
-  draw_with_pass(nullptr, glm::dmat4(1.0), *c.material, *pass, 0);
+  if (!c.main_texture.valid()) return draw_with_pass(nullptr, glm::dmat4(1.0), *c.material, *pass, 0);
+  const PropertyBlock extra = blit_source_properties(c.main_texture);
+  draw_with_pass(nullptr, glm::dmat4(1.0), *c.material, *pass, 0, &extra);
 }
 
 void FrameExecutor::operator()(const op::Blit& c) {
@@ -355,10 +366,7 @@ void FrameExecutor::operator()(const op::Blit& c) {
   target.name = "blit " + c.material->name;
   target.colors.push_back({c.destination, LoadAction::DontCare, StoreAction::Store});
   (*this)(target);
-  PropertyBlock extra;
-  extra.textures["_MainTex"] = TextureBinding{nullptr, c.source, SamplerDesc{}};
-  extra.textures["_MainTex"].sampler.mipmap_mode = MipmapMode::None;
-  extra.textures["_MainTex"].sampler.wrap_u = extra.textures["_MainTex"].sampler.wrap_v = WrapMode::ClampToEdge;
+  const PropertyBlock extra = blit_source_properties(c.source);
   draw_with_pass(nullptr, glm::dmat4(1.0), *c.material, *pass, 0, &extra);
   close_pass();
 }

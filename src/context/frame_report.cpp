@@ -110,14 +110,16 @@ nlohmann::json frame_report_json(const FrameReport& frame) {
   }
   nlohmann::json categories = nlohmann::json::object();
   for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
-  return {{"format", "ontile-report"},
-          {"version", 1},
-          {"frame", {{"bytes_read", frame.bytes_read()},
-                     {"bytes_written", frame.bytes_written()},
-                     {"by_category", categories}}},
-          {"passes", passes},
-          {"timing", {{"threads", frame.threads}, {"total_ms", frame.total_ms},
-                      {"passes", timing_passes}}}};
+  nlohmann::json report = {{"format", "ontile-report"},
+                            {"version", 1},
+                            {"frame", {{"bytes_read", frame.bytes_read()},
+                                       {"bytes_written", frame.bytes_written()},
+                                       {"by_category", categories}}},
+                            {"passes", passes},
+                            {"timing", {{"threads", frame.threads}, {"total_ms", frame.total_ms},
+                                        {"passes", timing_passes}}}};
+  if (frame.graph) report["graph"] = graph_report_json(*frame.graph);
+  return report;
 }
 
 std::string frame_report_table(const FrameReport& frame) {
@@ -170,6 +172,7 @@ std::string frame_report_table(const FrameReport& frame) {
     std::snprintf(line, sizeof line, "  %-24s %14s\n", name.c_str(), mib(bytes).c_str());
     out << line;
   }
+  if (frame.graph) out << graph_report_table(*frame.graph);
   return out.str();
 }
 

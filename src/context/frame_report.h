@@ -3,11 +3,13 @@
 #pragma once
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "context/graph_report.h"
 #include "tiler/pass_report.h"
 
 namespace ontile {
@@ -16,6 +18,7 @@ struct FrameReport {
   std::vector<PassReport> passes;
   int threads = 1;
   double total_ms = 0.0;  // wall clock, not deterministic
+  std::optional<GraphReport> graph;  // a render graph compiled with cull or merge
 
   uint64_t bytes_read() const;
   uint64_t bytes_written() const;

@@ -92,7 +92,10 @@ FrameReport RenderContext::submit() {
   std::vector<Command> commands;
   commands.swap(commands_);
   FrameExecutor executor(config_, pool_);
-  return executor.run(commands);
+  FrameReport report = executor.run(commands);
+  report.graph = std::move(graph_report_);
+  graph_report_.reset();
+  return report;
 }
 
 }  // namespace ontile

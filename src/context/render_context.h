@@ -4,11 +4,13 @@
 // the frame's traffic report.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "context/command_buffer.h"
 #include "context/frame_report.h"
+#include "context/render_graph_compiler.h"
 #include "tiler/render_pass_executor.h"
 
 namespace ontile {
@@ -16,6 +18,7 @@ namespace ontile {
 struct ContextConfig {
   int threads = 0;  // 0: all hardware threads
   TilerConfig tiler;
+  RenderGraphMode render_graph = RenderGraphMode::Off;  // how RenderGraph::execute compiles
 };
 
 // Temporary render targets, pooled by descriptor across frames of one context.
@@ -68,6 +71,9 @@ class RenderContext : private CommandBuffer {
   using CommandBuffer::set_render_target;
   using CommandBuffer::set_view_projection;
 
+  // What a render graph's compiler decided, reported by the next submit() (JSON "graph").
+  void add_graph_report(GraphReport report) { graph_report_ = std::move(report); }
+
   // Executes everything recorded since the last submit, in recorded order.
   FrameReport submit();
   const ContextConfig& config() const { return config_; }
@@ -77,6 +83,7 @@ class RenderContext : private CommandBuffer {
   std::vector<std::unique_ptr<Surface>> surfaces_;
   RenderTargetPool pool_;
   bool in_pass_ = false, in_subpass_ = false;
+  std::optional<GraphReport> graph_report_;
 };
 
 }  // namespace ontile

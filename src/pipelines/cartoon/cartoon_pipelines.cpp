@@ -1,6 +1,7 @@
 // The cartoon pipelines (see cartoon_pipelines.h).
 #include "pipelines/cartoon/cartoon_pipelines.h"
 
+#include "context/render_graph.h"
 #include "context/scene_renderers.h"
 #include "pipelines/cartoon/toon_shaders.h"
 #include "util/error.h"
@@ -33,6 +34,53 @@ AttachmentDesc transient_depth() {
           glm::vec4(1.0f), nullptr, nullptr};
 }
 
+// cartoon-multipass as a render graph: the scene drawn once per buffer, each pass with its
+// own (transient) depth test, then the Sobel edges sample every buffer's neighbours.
+FrameOutputs render_multipass(RenderContext& ctx, const FrameInputs& in, const ToonShaderLibrary& library,
+                              const CullingResults& culling, const CameraMatrices& camera, PixelFormat normal_format) {
+  RenderGraph graph;
+  auto target = [&](const char* name, PixelFormat format, glm::vec4 clear = kNoClear, bool memoryless = false) {
+    return graph.create({name, format, in.width_px, in.height_px, 1, clear, {}, memoryless});
+  };
+  const GraphResource color = target("color", PixelFormat::RGBA8_SRGB);
+  const GraphResource normals = target("normals", normal_format);
+  const GraphResource border = target("border", PixelFormat::RGBA8_UNORM);
+  const GraphResource depth = target("depth", PixelFormat::D32_FLOAT, glm::vec4(1.0f));
+  const GraphResource final_image = target("final", PixelFormat::RGBA8_SRGB);
+  struct Step { const char* pass; GraphResource output; const char* light_mode; };
+  for (const Step& s : {Step{"toon colour", color, toon::kColor}, Step{"toon normals", normals, toon::kNormal},
+                        Step{"toon border", border, toon::kBorder}}) {
+    graph.add_pass(s.pass)
+        .write_color(s.output, LoadAction::Clear, StoreAction::Store)
+        .write_depth(target("depth", PixelFormat::D32_FLOAT, glm::vec4(1.0f), true), LoadAction::Clear,
+                     StoreAction::DontCare)
+        .record([&, s](GraphPassRecorder& r) {
+          r.draw_renderers(culling, {{s.light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
+          if (s.output.index == color.index) r.draw_skybox(camera);
+        });
+  }
+  graph.add_pass("toon depth").write_depth(depth, LoadAction::Clear, StoreAction::Store).record([&](GraphPassRecorder& r) {
+    r.draw_renderers(culling, {{toon::kDepthOnly}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
+  });
+  // Screen-space edges: Sobel on depth and normals (3x3 neighbours, so texture reads),
+  // coloured by the border buffer; named as CommandBuffer::blit names its pass.
+  graph.add_pass("blit " + library.edges_material().name)
+      .read_texture(color).read_texture(depth).read_texture(normals).read_texture(border)
+      .write_color(final_image, LoadAction::DontCare, StoreAction::Store)
+      .record([&](GraphPassRecorder& r) {
+        r.set_global_texture("_DepthTex", r.texture(depth));
+        r.set_global_texture("_NormalTex", r.texture(normals));
+        r.set_global_texture("_BorderTex", r.texture(border));
+        r.blit_from(color, &library.edges_material(), toon::kEdgesPass);
+      });
+  graph.mark_output(final_image);
+  graph.execute(ctx);
+  FrameOutputs out;
+  out.report = ctx.submit();
+  out.color = graph.surface(final_image);
+  return out;
+}
+
 }  // namespace
 
 FrameOutputs CartoonPipeline::render(RenderContext& ctx, const FrameInputs& in) {
@@ -47,6 +95,7 @@ FrameOutputs CartoonPipeline::render(RenderContext& ctx, const FrameInputs& in) 
   const CullingResults culling = ctx.cull(sr.renderers, camera);
   set_toon_globals(ctx, scene, in.camera, camera);
 
+  if (multipass_) return render_multipass(ctx, in, library, culling, camera, normal_format);
   const int w = in.width_px, h = in.height_px;
   Surface* color = ctx.create_surface("color", PixelFormat::RGBA8_SRGB, w, h);
   Surface* normals = ctx.create_surface("normals", normal_format, w, h);
@@ -54,42 +103,19 @@ FrameOutputs CartoonPipeline::render(RenderContext& ctx, const FrameInputs& in) 
   Surface* depth = ctx.create_surface("depth", PixelFormat::D32_FLOAT, w, h);
   Surface* final_image = ctx.create_surface("final", PixelFormat::RGBA8_SRGB, w, h);
 
-  if (!multipass_) {
-    // The paper's design: every G-buffer target written by one MRT pass; the sky writes colour
-    // only (the other outputs stay zero, as their clears).
-    ctx.begin_render_pass("toon MRT", w, h, 1,
-                          {target("color", color, LoadAction::Clear, StoreAction::Store),
-                           target("normals", normals, LoadAction::Clear, StoreAction::Store),
-                           target("border", border, LoadAction::Clear, StoreAction::Store),
-                           target("depth", depth, LoadAction::Clear, StoreAction::Store, glm::vec4(1.0f))},
-                          3);
-    ctx.begin_subpass({0, 1, 2});
-    ctx.draw_renderers(culling, {{toon::kMrt}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
-    ctx.draw_skybox(camera);
-    ctx.end_subpass();
-    ctx.end_render_pass();
-  } else {
-    // The naive way: the scene is drawn once per buffer, each pass with its own depth test.
-    struct Step { const char* pass; Surface* surface; const char* light_mode; };
-    for (const Step& s : {Step{"toon colour", color, toon::kColor}, Step{"toon normals", normals, toon::kNormal},
-                          Step{"toon border", border, toon::kBorder}}) {
-      ctx.begin_render_pass(s.pass, w, h, 1,
-                            {target(s.surface->name().c_str(), s.surface, LoadAction::Clear, StoreAction::Store),
-                             transient_depth()},
-                            1);
-      ctx.begin_subpass({0});
-      ctx.draw_renderers(culling, {{s.light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
-      if (s.surface == color) ctx.draw_skybox(camera);
-      ctx.end_subpass();
-      ctx.end_render_pass();
-    }
-    ctx.begin_render_pass("toon depth", w, h, 1,
-                          {target("depth", depth, LoadAction::Clear, StoreAction::Store, glm::vec4(1.0f))}, 0);
-    ctx.begin_subpass({});
-    ctx.draw_renderers(culling, {{toon::kDepthOnly}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
-    ctx.end_subpass();
-    ctx.end_render_pass();
-  }
+  // The paper's design: every G-buffer target written by one MRT pass; the sky writes colour
+  // only (the other outputs stay zero, as their clears).
+  ctx.begin_render_pass("toon MRT", w, h, 1,
+                        {target("color", color, LoadAction::Clear, StoreAction::Store),
+                         target("normals", normals, LoadAction::Clear, StoreAction::Store),
+                         target("border", border, LoadAction::Clear, StoreAction::Store),
+                         target("depth", depth, LoadAction::Clear, StoreAction::Store, glm::vec4(1.0f))},
+                        3);
+  ctx.begin_subpass({0, 1, 2});
+  ctx.draw_renderers(culling, {{toon::kMrt}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
+  ctx.draw_skybox(camera);
+  ctx.end_subpass();
+  ctx.end_render_pass();
 
   // Screen-space edges: Sobel on depth and normals, coloured by the border buffer.
   CommandBuffer cmd("toon edges");

@@ -1,6 +1,7 @@
 // The deferred pipelines and the forward baseline (see deferred_pipelines.h).
 #include "pipelines/deferred/deferred_pipelines.h"
 
+#include "context/render_graph.h"
 #include "context/scene_renderers.h"
 #include "pipelines/deferred/deferred_options.h"
 #include "pipelines/deferred/deferred_shaders.h"
@@ -46,7 +47,75 @@ void draw_transparent(RenderContext& ctx, const FrameSetup& s) {
                      {RenderQueueRange::transparent()});
 }
 
-TextureBinding texture_of(Surface* surface) { return {nullptr, RenderTargetRef::of(surface), {}}; }
+// deferred-classic as a render graph written pass by pass, the way the two-pass renderer is
+// (docs/render-graph.md): the G-buffer pass stores every target and depth, lighting reads them
+// at its own pixel (textures unless --render-graph merge puts both in one render pass).
+FrameOutputs render_classic(RenderContext& ctx, const FrameInputs& in, const DeferredOptions& options,
+                            const FrameSetup& setup) {
+  const GBufferLayout& layout = options.layout;
+  const int w = in.width_px, h = in.height_px;
+  const std::vector<PixelFormat> formats = layout.target_formats();
+  const std::vector<std::string> names = layout.target_names();
+  const int targets = layout.target_count();
+  RenderGraph graph;
+  auto target = [&](const std::string& name, PixelFormat format, glm::vec4 clear = glm::vec4(0.0f)) {
+    return graph.create({name, format, w, h, 1, clear});
+  };
+  const GraphResource light = target("light", layout.light_format, lit::kBackgroundColor);
+  const GraphResource depth = target("depth", layout.depth_format, glm::vec4(1.0f));
+  std::vector<GraphResource> gbuffer;
+  for (int k = 0; k < targets; ++k) gbuffer.push_back(target(names[k], formats[k]));
+  const GraphResource final_image = options.tonemap ? target("final", PixelFormat::RGBA8_SRGB) : GraphResource{};
+
+  GraphPassBuilder gbuffer_pass = graph.add_pass("gbuffer");
+  if (layout.light_in_gbuffer) gbuffer_pass.write_color(light, LoadAction::Clear, StoreAction::Store);
+  for (int k = 0; k < targets; ++k) gbuffer_pass.write_color(gbuffer[k], LoadAction::Clear, StoreAction::Store);
+  gbuffer_pass.write_depth(depth, LoadAction::Clear, StoreAction::Store).record([&](GraphPassRecorder& r) {
+    r.draw_renderers(setup.culling, {{deferred::kGBuffer}, SortingCriteria::CommonOpaque}, {RenderQueueRange::opaque()});
+  });
+
+  // Unity's lighting pass loads the accumulation the G-buffer pass started; Vulkan-Samples'
+  // clears the light target. Input k of the on-tile shader is depth, then the G-buffer.
+  const LoadAction light_load = layout.light_in_gbuffer ? LoadAction::Load : LoadAction::Clear;
+  GraphPassBuilder lighting = graph.add_pass("lighting");
+  lighting.write_color(light, light_load, StoreAction::Store).read_own_pixel(depth);
+  for (int k = 0; k < targets; ++k) lighting.read_own_pixel(gbuffer[k]);
+  lighting.record([&](GraphPassRecorder& r) {
+    const bool from_textures = !r.on_tile(depth);
+    if (from_textures) {
+      r.set_global_texture(deferred::kDepthTexture, r.texture(depth));
+      for (int k = 0; k < targets; ++k) r.set_global_texture(deferred::gbuffer_texture(k), r.texture(gbuffer[k]));
+    }
+    r.draw_full_screen(&setup.library.lighting_material(from_textures), deferred::kLightingPass);
+  });
+
+  if (setup.has_transparent) {
+    graph.add_pass("transparent")
+        .write_color(light, LoadAction::Load, StoreAction::Store)
+        .read_depth(depth, LoadAction::Load, StoreAction::DontCare)
+        .record([&](GraphPassRecorder& r) {
+          r.draw_renderers(setup.culling, {{deferred::kForwardLit}, SortingCriteria::CommonTransparent},
+                           {RenderQueueRange::transparent()});
+        });
+  }
+  if (options.tonemap) {
+    graph.add_pass("tonemap")
+        .read_own_pixel(light)
+        .write_color(final_image, LoadAction::DontCare, StoreAction::Store)
+        .record([&](GraphPassRecorder& r) {
+          const bool from_textures = !r.on_tile(light);
+          if (from_textures) r.set_global_texture(deferred::kLightTexture, r.texture(light));
+          r.draw_full_screen(&setup.library.tonemap_material(from_textures), deferred::kTonemapPass);
+        });
+  }
+  const GraphResource shown = options.tonemap ? final_image : light;
+  graph.mark_output(shown);
+  graph.execute(ctx);
+  FrameOutputs out;
+  out.report = ctx.submit();
+  out.color = graph.surface(shown);
+  return out;
+}
 
 }  // namespace
 
@@ -55,6 +124,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
       parse_deferred_options(in.options, subpasses_ ? DeferredVariant::Subpass : DeferredVariant::Classic);
   in.options.reject_unknown(name());
   const FrameSetup setup(in, options, ctx);
+  if (!subpasses_) return render_classic(ctx, in, options, setup);
   const GBufferLayout& layout = options.layout;
   const int w = in.width_px, h = in.height_px;
   const std::vector<PixelFormat> formats = layout.target_formats();
@@ -62,70 +132,6 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
   const int targets = layout.target_count();
   Surface* final_image = options.tonemap ? ctx.create_surface("final", PixelFormat::RGBA8_SRGB, w, h) : nullptr;
   FrameOutputs out;
-
-  if (!subpasses_) {
-    // Pass 1 stores the G-buffer and depth; pass 2 reads them back as textures.
-    Surface* light = ctx.create_surface("light", layout.light_format, w, h);
-    Surface* depth = ctx.create_surface("depth", layout.depth_format, w, h);
-    std::vector<Surface*> gbuffer;
-    for (int k = 0; k < targets; ++k) gbuffer.push_back(ctx.create_surface(names[k], formats[k], w, h));
-    std::vector<AttachmentDesc> a;
-    std::vector<int> outputs;
-    if (layout.light_in_gbuffer) {
-      a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear, StoreAction::Store, lit::kBackgroundColor));
-      outputs.push_back(0);
-    }
-    for (int k = 0; k < targets; ++k) {
-      outputs.push_back(static_cast<int>(a.size()));
-      a.push_back(attachment(names[k], formats[k], gbuffer[k], LoadAction::Clear, StoreAction::Store));
-    }
-    a.push_back(attachment("depth", layout.depth_format, depth, LoadAction::Clear, StoreAction::Store, glm::vec4(1.0f)));
-    ctx.begin_render_pass("gbuffer", w, h, 1, a, static_cast<int>(a.size()) - 1);
-    ctx.begin_subpass(outputs);
-    draw_opaque(ctx, setup, deferred::kGBuffer);
-    ctx.end_subpass();
-    ctx.end_render_pass();
-
-    CommandBuffer bind("bind G-buffer textures");
-    bind.set_global_texture(deferred::kDepthTexture, texture_of(depth));
-    for (int k = 0; k < targets; ++k) bind.set_global_texture(deferred::gbuffer_texture(k), texture_of(gbuffer[k]));
-    ctx.execute_command_buffer(bind);
-    // Unity's lighting pass loads the accumulation the G-buffer pass started; Vulkan-Samples'
-    // clears the light target.
-    const LoadAction light_load = layout.light_in_gbuffer ? LoadAction::Load : LoadAction::Clear;
-    ctx.begin_render_pass("lighting", w, h, 1,
-                          {attachment("light", layout.light_format, light, light_load, StoreAction::Store, lit::kBackgroundColor)}, -1);
-    ctx.begin_subpass({0});
-    ctx.draw_full_screen(&setup.library.lighting_material(true), deferred::kLightingPass);
-    ctx.end_subpass();
-    ctx.end_render_pass();
-
-    if (setup.has_transparent) {
-      ctx.begin_render_pass("transparent", w, h, 1,
-                            {attachment("light", layout.light_format, light, LoadAction::Load, StoreAction::Store),
-                             attachment("depth", layout.depth_format, depth, LoadAction::Load, StoreAction::DontCare)},
-                            1);
-      ctx.begin_subpass({0}, {}, true);
-      draw_transparent(ctx, setup);
-      ctx.end_subpass();
-      ctx.end_render_pass();
-    }
-    if (options.tonemap) {
-      CommandBuffer bind_light("bind light accumulation");
-      bind_light.set_global_texture(deferred::kLightTexture, texture_of(light));
-      ctx.execute_command_buffer(bind_light);
-      ctx.begin_render_pass("tonemap", w, h, 1,
-                            {attachment("final", PixelFormat::RGBA8_SRGB, final_image, LoadAction::DontCare, StoreAction::Store)},
-                            -1);
-      ctx.begin_subpass({0});
-      ctx.draw_full_screen(&setup.library.tonemap_material(true), deferred::kTonemapPass);
-      ctx.end_subpass();
-      ctx.end_render_pass();
-    }
-    out.report = ctx.submit();
-    out.color = options.tonemap ? final_image : light;
-    return out;
-  }
 
   // One render pass; G-buffer and depth live only in tile memory. transient=off backs them by
   // memory as Vulkan-Samples' "transient attachments off" does (store op still DONT_CARE, so

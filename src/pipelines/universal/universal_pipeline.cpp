@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "context/render_graph.h"
 #include "context/scene_renderers.h"
 #include "pipelines/universal/screen_space_outline_feature.h"
 #include "pipelines/universal/universal_lit_shader.h"
@@ -62,7 +63,9 @@ double number_option(const PipelineOptions& options, const std::string& key, dou
   return number;
 }
 
-// One frame's recording: the targets, what runs, and the forward pass's open/closed state.
+// One frame as a render graph: the pipeline's render passes (shadows, prepass, the forward
+// parts) are graph passes; the colour copy, the tonemap blit and the renderer features record
+// their own passes into the context, as external graph passes declaring what they touch.
 class FrameRecorder {
  public:
   FrameRecorder(RenderContext& ctx, const FrameInputs& in, const UniversalSettings& settings)
@@ -101,19 +104,20 @@ class FrameRecorder {
     prepass_ = settings_.depth_prepass || inputs.depth || inputs.normals;
     copy_color_ = settings_.copy_color || inputs.color_copy;
 
-    color_ = ctx_.create_surface("_CameraColorAttachment", PixelFormat::RGBA16_FLOAT, w, h);
-    depth_ = ctx_.create_surface("_CameraDepthAttachment", PixelFormat::D32_FLOAT, w, h);
-    if (normals_prepass_) normals_ = ctx_.create_surface("_CameraNormalsTexture", PixelFormat::RGB10A2_UNORM, w, h);
-    final_ = ctx_.create_surface("final", PixelFormat::RGBA8_SRGB, w, h);
+    // Attachment names as the passes name them; surfaces named as URP names its textures.
+    color_ = graph_.create({"color", PixelFormat::RGBA16_FLOAT, w, h, 1, kBlack, "_CameraColorAttachment"});
+    depth_ = graph_.create({"depth", PixelFormat::D32_FLOAT, w, h, 1, glm::vec4(1.0f), "_CameraDepthAttachment"});
+    // Cleared to a normal facing the camera, (0, 0, 1) encoded as n * 0.5 + 0.5.
+    if (normals_prepass_) {
+      normals_ = graph_.create({"normals", PixelFormat::RGB10A2_UNORM, w, h, 1, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f),
+                                "_CameraNormalsTexture"});
+    }
+    final_ = graph_.create({"final", PixelFormat::RGBA8_SRGB, w, h});
     data_.inputs = &in_;
     data_.camera = camera_;
     data_.culling = &culling_;
     data_.width_px = w;
     data_.height_px = h;
-    data_.camera_color = RenderTargetRef::of(color_);
-    data_.camera_depth = RenderTargetRef::of(depth_);
-    if (normals_) data_.camera_normals = RenderTargetRef::of(normals_);
-    data_.final_color = RenderTargetRef::of(final_);
 
     lights_ = universal_lights(scene);
     CommandBuffer globals("universal globals");
@@ -128,18 +132,34 @@ class FrameRecorder {
         run_step(-1 - what);
       }
     }
+    graph_.mark_output(final_);
+    graph_.execute(ctx_);
     if (data_.camera_color_copy.valid()) ctx_.release_temporary_rt(kColorCopyId);
     FrameOutputs out;
     out.report = ctx_.submit();
-    out.color = final_;
+    out.color = graph_.surface(final_);
     return out;
   }
 
  private:
+  // The camera targets as features see them, once the graph has backed them with surfaces.
+  void bind_camera_targets() {
+    data_.camera_color = RenderTargetRef::of(graph_.surface(color_));
+    data_.camera_depth = RenderTargetRef::of(graph_.surface(depth_));
+    if (normals_.valid()) data_.camera_normals = RenderTargetRef::of(graph_.surface(normals_));
+    data_.final_color = RenderTargetRef::of(graph_.surface(final_));
+  }
+
+  // A feature may read and draw onto the camera targets (and read the normals it asked for).
   void run_feature(RendererFeature& feature, int index) {
     if (forward_open_) close_forward();
-    data_.first_temporary_id = kFirstFeatureTemporaryId + index * kFeatureTemporaryIds;
-    feature.record(ctx_, data_);
+    GraphPassBuilder pass = graph_.add_external_pass(feature.name(), [this, &feature, index](RenderContext& ctx) {
+      bind_camera_targets();
+      data_.first_temporary_id = kFirstFeatureTemporaryId + index * kFeatureTemporaryIds;
+      feature.record(ctx, data_);
+    });
+    pass.write_color(color_, LoadAction::Load, StoreAction::Store).write_depth(depth_, LoadAction::Load, StoreAction::Store);
+    if (normals_.valid()) pass.read_texture(normals_);
   }
 
   void run_step(int key) {
@@ -147,16 +167,17 @@ class FrameRecorder {
       case kShadowsKey: return shadows();
       case kPrepassKey: return prepass();
       case kOpaquesKey:
-        open_forward();
-        return ctx_.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonOpaque},
-                                   {RenderQueueRange::opaque()});
+        return forward_step([this](GraphPassRecorder& r) {
+          r.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonOpaque},
+                           {RenderQueueRange::opaque()});
+        });
       case kSkyboxKey:
-        open_forward();
-        return ctx_.draw_skybox(camera_);
+        return forward_step([this](GraphPassRecorder& r) { r.draw_skybox(camera_); });
       case kTransparentsKey:
-        open_forward();
-        return ctx_.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonTransparent},
-                                   {RenderQueueRange::transparent()});
+        return forward_step([this](GraphPassRecorder& r) {
+          r.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonTransparent},
+                           {RenderQueueRange::transparent()});
+        });
       case kEndForwardKey: return end_forward();
       case kPostProcessingKey: return post_processing();
       default: throw Error("universal pipeline: unknown step " + std::to_string(key));
@@ -168,97 +189,97 @@ class FrameRecorder {
     for (uint32_t i : culling_.visible) receivers.extend(renderers_.renderers[i].world_bounds);
     if (!settings_.main_light_shadows || receivers.empty()) return;
     const MainLightShadowSettings& s = settings_.shadows;
-    const MainLightShadowSetup setup =
+    shadow_setup_ =
         fit_main_light_shadow(lights_.main.to_light, receivers, in_.scene->world_bounds, s.map_size_px);
-    Surface* map = ctx_.create_surface("_MainLightShadowmapTexture", PixelFormat::D32_FLOAT, s.map_size_px, s.map_size_px);
-    shadow_casters_ = ctx_.cull(renderers_.renderers, setup.light_camera);
-    ctx_.begin_render_pass("MainLightShadow", s.map_size_px, s.map_size_px, 1,
-                           {{"shadowmap", PixelFormat::D32_FLOAT, LoadAction::Clear, StoreAction::Store,
-                             glm::vec4(1.0f), map, nullptr}},
-                           0);
-    ctx_.begin_subpass({});
-    ctx_.draw_renderers(shadow_casters_, {{universal_light_mode::kShadowCaster}, SortingCriteria::CommonOpaque},
-                        {RenderQueueRange::opaque()});
-    ctx_.end_subpass();
-    ctx_.end_render_pass();
-    SamplerDesc texel_fetch;
-    texel_fetch.mag_filter = texel_fetch.min_filter = FilterMode::Nearest;
-    texel_fetch.mipmap_mode = MipmapMode::None;
-    ctx_.set_global_texture("_MainLightShadowmapTexture", {nullptr, RenderTargetRef::of(map), texel_fetch});
-    ctx_.set_global_matrix("_MainLightWorldToShadow", glm::mat4(setup.world_to_shadow));
-    // URP's GetShadowBias: biases in texels times the texel size, scaled by the PCF kernel's
-    // radius because the biases only hold for a sample within one texel of the projected point
-    // (the 3x3 kernel reaches 1.5 texels).
-    const float kernel_radius_texels = 1.5f;
-    const float texel = setup.texel_size_world * kernel_radius_texels;
-    ctx_.set_global_vector("_MainLightShadowParams",
-                           glm::vec4(s.depth_bias_texels * texel, s.normal_bias_texels * texel, s.strength, 0.0f));
+    shadow_map_ = graph_.create({"shadowmap", PixelFormat::D32_FLOAT, s.map_size_px, s.map_size_px, 1,
+                                 glm::vec4(1.0f), "_MainLightShadowmapTexture"});
+    shadow_casters_ = ctx_.cull(renderers_.renderers, shadow_setup_.light_camera);
+    graph_.add_pass("MainLightShadow")
+        .write_depth(shadow_map_, LoadAction::Clear, StoreAction::Store)
+        .record([this](GraphPassRecorder& r) {
+          const MainLightShadowSettings& s = settings_.shadows;
+          r.draw_renderers(shadow_casters_, {{universal_light_mode::kShadowCaster}, SortingCriteria::CommonOpaque},
+                           {RenderQueueRange::opaque()});
+          SamplerDesc texel_fetch;
+          texel_fetch.mag_filter = texel_fetch.min_filter = FilterMode::Nearest;
+          texel_fetch.mipmap_mode = MipmapMode::None;
+          r.set_global_texture("_MainLightShadowmapTexture", r.texture(shadow_map_, texel_fetch));
+          r.set_global_matrix("_MainLightWorldToShadow", glm::mat4(shadow_setup_.world_to_shadow));
+          // URP's GetShadowBias: biases in texels times the texel size, scaled by the PCF
+          // kernel's radius because the biases only hold for a sample within one texel of the
+          // projected point (the 3x3 kernel reaches 1.5 texels).
+          const float kernel_radius_texels = 1.5f;
+          const float texel = shadow_setup_.texel_size_world * kernel_radius_texels;
+          r.set_global_vector("_MainLightShadowParams",
+                              glm::vec4(s.depth_bias_texels * texel, s.normal_bias_texels * texel, s.strength, 0.0f));
+        });
   }
 
   void prepass() {
     if (!prepass_) return;
-    const int w = in_.width_px, h = in_.height_px;
-    const AttachmentDesc depth{"depth", PixelFormat::D32_FLOAT, LoadAction::Clear, StoreAction::Store,
-                               glm::vec4(1.0f), depth_, nullptr};
+    auto draw = [this](const char* light_mode) {
+      return [this, light_mode](GraphPassRecorder& r) {
+        r.draw_renderers(culling_, {{light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::opaque()});
+      };
+    };
     if (normals_prepass_) {
-      // Cleared to a normal facing the camera, (0, 0, 1) encoded as n * 0.5 + 0.5.
-      const AttachmentDesc normals{"normals", PixelFormat::RGB10A2_UNORM, LoadAction::Clear, StoreAction::Store,
-                                   glm::vec4(0.5f, 0.5f, 1.0f, 1.0f), normals_, nullptr};
-      ctx_.begin_render_pass("DepthNormalPrepass", w, h, 1, {normals, depth}, 1);
-      ctx_.begin_subpass({0});
-      ctx_.draw_renderers(culling_, {{universal_light_mode::kDepthNormals}, SortingCriteria::CommonOpaque},
-                          {RenderQueueRange::opaque()});
+      graph_.add_pass("DepthNormalPrepass")
+          .write_color(normals_, LoadAction::Clear, StoreAction::Store)
+          .write_depth(depth_, LoadAction::Clear, StoreAction::Store)
+          .record(draw(universal_light_mode::kDepthNormals));
     } else {
-      ctx_.begin_render_pass("DepthPrepass", w, h, 1, {depth}, 0);
-      ctx_.begin_subpass({});
-      ctx_.draw_renderers(culling_, {{universal_light_mode::kDepthOnly}, SortingCriteria::CommonOpaque},
-                          {RenderQueueRange::opaque()});
+      graph_.add_pass("DepthPrepass")
+          .write_depth(depth_, LoadAction::Clear, StoreAction::Store)
+          .record(draw(universal_light_mode::kDepthOnly));
     }
-    ctx_.end_subpass();
-    ctx_.end_render_pass();
   }
 
   // The forward pass: colour cleared by its first part, depth loaded from the prepass (or
   // cleared without one); depth is stored only when a resumed part will load it again.
-  void open_forward() {
-    if (forward_open_) return;
+  void forward_step(std::function<void(GraphPassRecorder&)> step) {
+    forward_open_ = true;
+    forward_steps_.push_back(std::move(step));
+  }
+
+  void close_forward() {
     const bool first = forward_parts_ == 0;
     const LoadAction color_load = first ? LoadAction::Clear : LoadAction::Load;
     const LoadAction depth_load = first && !prepass_ ? LoadAction::Clear : LoadAction::Load;
     const StoreAction depth_store = split_forward_ ? StoreAction::Store : StoreAction::DontCare;
-    ctx_.begin_render_pass(first ? "ForwardRendering" : "ForwardRendering (resumed)", in_.width_px,
-                           in_.height_px, 1,
-                           {{"color", PixelFormat::RGBA16_FLOAT, color_load, StoreAction::Store, kBlack, color_, nullptr},
-                            {"depth", PixelFormat::D32_FLOAT, depth_load, depth_store, glm::vec4(1.0f), depth_, nullptr}},
-                           1);
-    ctx_.begin_subpass({0});
-    forward_open_ = true;
-    ++forward_parts_;
-  }
-
-  void close_forward() {
-    ctx_.end_subpass();
-    ctx_.end_render_pass();
+    GraphPassBuilder pass = graph_.add_pass(first ? "ForwardRendering" : "ForwardRendering (resumed)");
+    pass.write_color(color_, color_load, StoreAction::Store).write_depth(depth_, depth_load, depth_store);
+    if (shadow_map_.valid()) pass.read_texture(shadow_map_);
+    pass.record([steps = std::move(forward_steps_)](GraphPassRecorder& r) {
+      for (const auto& step : steps) step(r);
+    });
+    forward_steps_.clear();
     forward_open_ = false;
+    ++forward_parts_;
   }
 
   void end_forward() {
     if (forward_open_) close_forward();
     if (!copy_color_) return;
     copy_material_ = make_copy_material(*blit_shader_, "CopyColor");
-    ctx_.get_temporary_rt(kColorCopyId, {in_.width_px, in_.height_px, PixelFormat::RGBA16_FLOAT, 1});
-    ctx_.blit(RenderTargetRef::of(color_), RenderTargetRef::temporary(kColorCopyId), copy_material_.get(), "Copy");
-    data_.camera_color_copy = RenderTargetRef::temporary(kColorCopyId);
-    SamplerDesc texel_exact;
-    texel_exact.mag_filter = texel_exact.min_filter = FilterMode::Nearest;
-    texel_exact.mipmap_mode = MipmapMode::None;
-    texel_exact.wrap_u = texel_exact.wrap_v = WrapMode::ClampToEdge;
-    ctx_.set_global_texture("_CameraColorCopyTexture", {nullptr, data_.camera_color_copy, texel_exact});
+    graph_.add_external_pass("CopyColor", [this](RenderContext& ctx) {
+      ctx.get_temporary_rt(kColorCopyId, {in_.width_px, in_.height_px, PixelFormat::RGBA16_FLOAT, 1});
+      ctx.blit(RenderTargetRef::of(graph_.surface(color_)), RenderTargetRef::temporary(kColorCopyId),
+               copy_material_.get(), "Copy");
+      data_.camera_color_copy = RenderTargetRef::temporary(kColorCopyId);
+      SamplerDesc texel_exact;
+      texel_exact.mag_filter = texel_exact.min_filter = FilterMode::Nearest;
+      texel_exact.mipmap_mode = MipmapMode::None;
+      texel_exact.wrap_u = texel_exact.wrap_v = WrapMode::ClampToEdge;
+      ctx.set_global_texture("_CameraColorCopyTexture", {nullptr, data_.camera_color_copy, texel_exact});
+    }).read_texture(color_);
   }
 
   void post_processing() {
     tonemap_material_ = make_tonemap_material(*blit_shader_, settings_.tonemapper, settings_.exposure);
-    ctx_.blit(RenderTargetRef::of(color_), RenderTargetRef::of(final_), tonemap_material_.get(), "Tonemap");
+    graph_.add_external_pass("PostProcessing", [this](RenderContext& ctx) {
+      ctx.blit(RenderTargetRef::of(graph_.surface(color_)), RenderTargetRef::of(graph_.surface(final_)),
+               tonemap_material_.get(), "Tonemap");
+    }).read_texture(color_).write_color(final_, LoadAction::DontCare, StoreAction::Store);
   }
 
   RenderContext& ctx_;
@@ -270,8 +291,11 @@ class FrameRecorder {
   std::unique_ptr<RenderMaterial> copy_material_, tonemap_material_;
   SceneRenderers renderers_;
   CullingResults culling_, shadow_casters_;
+  MainLightShadowSetup shadow_setup_;
   RenderingData data_;
-  Surface *color_ = nullptr, *depth_ = nullptr, *normals_ = nullptr, *final_ = nullptr;
+  RenderGraph graph_;
+  GraphResource color_, depth_, normals_, final_, shadow_map_;
+  std::vector<std::function<void(GraphPassRecorder&)>> forward_steps_;
   bool prepass_ = false, normals_prepass_ = false, copy_color_ = false, split_forward_ = false;
   bool forward_open_ = false;
   int forward_parts_ = 0;
