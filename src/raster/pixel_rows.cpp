@@ -1,10 +1,11 @@
 // Pixel conversions over runs of pixels (see pixel_format.h: quantize_pixels, encode_pixels,
-// decode_pixels): one format dispatch per run, the hot formats on SIMD lanes
-// (pixel_format_simd.h), everything else through the per-pixel functions.
+// decode_pixels): one format dispatch per run, every format on SIMD lanes (pixel_format_simd.h,
+// pixel_packed_simd.h).
 #include <cstring>
 
 #include "raster/pixel_format.h"
 #include "raster/pixel_format_simd.h"
+#include "raster/pixel_packed_simd.h"
 #include "raster/srgb8_tables.h"
 
 namespace ontile {
@@ -35,6 +36,7 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
       quantize_half_simd(a, count);
       return;
     default:
+      if (quantize_packed_pixels(format, r, g, b, a, count)) return;
       for (int i = 0; i < count; ++i) {
         const glm::vec4 q = quantize_pixel(format, {r[i], g[i], b[i], a[i]});
         r[i] = q.x;
@@ -72,6 +74,7 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
       for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &src[i].x, 4);
       return;
     default: {
+      if (encode_packed_pixels(format, src, count, dst)) return;
       const int bytes = bytes_per_pixel(format);
       for (int i = 0; i < count; ++i) encode_pixel(format, src[i], dst + bytes * i);
     }
@@ -108,6 +111,7 @@ void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4*
       }
       return;
     default: {
+      if (decode_packed_pixels(format, src, count, dst)) return;
       const int bytes = bytes_per_pixel(format);
       for (int i = 0; i < count; ++i) dst[i] = decode_pixel(format, src + bytes * i);
     }
