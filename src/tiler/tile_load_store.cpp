@@ -5,6 +5,7 @@
 #include "tiler/tile_load_store.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace ontile {
 namespace {
@@ -27,6 +28,10 @@ void load_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileR
       decode_pixels(desc.format, src, n, color + first);
       continue;
     }
+    if (desc.format == PixelFormat::D32_FLOAT) {  // the stored bytes are the float's
+      std::memcpy(depth + first, src, sizeof(float) * static_cast<size_t>(n));
+      continue;
+    }
     decode_pixels(desc.format, src, n, row);
     for (int i = 0; i < n; ++i) depth[first + i] = row[i].x;
   }
@@ -44,6 +49,11 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
   for (int ly = 0; ly < rect.height; ++ly) {
     const size_t first = memory.index(0, ly, 0);
     const glm::vec4* values = memory.color_plane(attachment) + first;
+    if (is_depth && desc.format == PixelFormat::D32_FLOAT && store && !resolve) {
+      std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly), memory.depth_plane() + first,
+                  sizeof(float) * static_cast<size_t>(n));  // the stored bytes are the float's
+      continue;
+    }
     if (is_depth) {
       for (int i = 0; i < n; ++i) row[i] = glm::vec4(memory.depth_plane()[first + i], 0.0f, 0.0f, 1.0f);
       values = row;
