@@ -35,8 +35,8 @@ void gather_channels(const glm::vec4* src, int pixels, int first, int channels, 
 }
 
 void encode_chunk(PixelFormat format, const glm::vec4* src, int pixels, uint8_t* dst) {
-  float values[4 * kChunkPixels];
-  uint32_t codes[4 * kChunkPixels];
+  float values[4 * kChunkPixels] = {};  // zeroed for GCC: it cannot see what kernels read
+  uint32_t codes[4 * kChunkPixels] = {};
   switch (format) {
     case PixelFormat::RG11B10_FLOAT:
       gather_channels(src, pixels, 0, 1, values);
@@ -75,8 +75,8 @@ void encode_chunk(PixelFormat format, const glm::vec4* src, int pixels, uint8_t*
 }
 
 void decode_chunk(PixelFormat format, const uint8_t* src, int pixels, glm::vec4* dst) {
-  float values[4 * kChunkPixels];
-  uint32_t codes[4 * kChunkPixels];
+  float values[4 * kChunkPixels] = {};  // zeroed for GCC: it cannot see what kernels read
+  uint32_t codes[4 * kChunkPixels] = {};
   switch (format) {
     case PixelFormat::RG11B10_FLOAT:
       for (int p = 0; p < pixels; ++p) {
