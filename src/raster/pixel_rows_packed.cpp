@@ -25,6 +25,19 @@ uint32_t load_u32(const uint8_t* src) {
   return src[0] | (uint32_t{src[1]} << 8) | (uint32_t{src[2]} << 16) | (uint32_t{src[3]} << 24);
 }
 
+// Per-thread scratch of one chunk's channels and codes. Thread-local rather than on the stack:
+// zeroed once (stack arrays would be zeroed per chunk, or GCC warns that the kernels may read
+// them uninitialised, which it cannot see they do not).
+struct ChunkBuffers {
+  float values[4 * kChunkPixels];
+  uint32_t codes[4 * kChunkPixels];
+};
+
+ChunkBuffers& chunk_buffers() {
+  static thread_local ChunkBuffers buffers{};
+  return buffers;
+}
+
 void fill(float* values, int count, float value) { std::fill_n(values, count, value); }
 
 // Channels `first`..`first + channels - 1` of each pixel, pixel after pixel.
@@ -35,8 +48,9 @@ void gather_channels(const glm::vec4* src, int pixels, int first, int channels, 
 }
 
 void encode_chunk(PixelFormat format, const glm::vec4* src, int pixels, uint8_t* dst) {
-  float values[4 * kChunkPixels] = {};  // zeroed for GCC: it cannot see what kernels read
-  uint32_t codes[4 * kChunkPixels] = {};
+  ChunkBuffers& buffers = chunk_buffers();
+  float* const values = buffers.values;
+  uint32_t* const codes = buffers.codes;
   switch (format) {
     case PixelFormat::RG11B10_FLOAT:
       gather_channels(src, pixels, 0, 1, values);
@@ -75,8 +89,9 @@ void encode_chunk(PixelFormat format, const glm::vec4* src, int pixels, uint8_t*
 }
 
 void decode_chunk(PixelFormat format, const uint8_t* src, int pixels, glm::vec4* dst) {
-  float values[4 * kChunkPixels] = {};  // zeroed for GCC: it cannot see what kernels read
-  uint32_t codes[4 * kChunkPixels] = {};
+  ChunkBuffers& buffers = chunk_buffers();
+  float* const values = buffers.values;
+  uint32_t* const codes = buffers.codes;
   switch (format) {
     case PixelFormat::RG11B10_FLOAT:
       for (int p = 0; p < pixels; ++p) {
