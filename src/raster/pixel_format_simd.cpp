@@ -168,18 +168,19 @@ void QuantizeHalfKernel(float* values, int count) {
   }
 }
 
+static_assert(std::endian::native == std::endian::little, "binary16 rows store host-order u16");
+
 void EncodeHalfKernel(const float* values, int count, uint8_t* dst) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
+  const hn::Rebind<uint16_t, decltype(di)> d16;
   const size_t n = hn::Lanes(df);
-  alignas(64) int32_t codes[64];
   size_t i = 0;
-  for (; i + n <= static_cast<size_t>(count) && n <= 64; i += n) {
-    hn::Store(half_code(di, hn::BitCast(di, hn::LoadU(df, values + i))), di, codes);
-    for (size_t k = 0; k < n; ++k) {
-      dst[2 * (i + k)] = static_cast<uint8_t>(codes[k]);
-      dst[2 * (i + k) + 1] = static_cast<uint8_t>(codes[k] >> 8);
-    }
+  // Codes are 0..0xFFFF, so the saturating demotion keeps them; stored in host order, which is
+  // the scalar path's little-endian (asserted below).
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    hn::StoreU(hn::DemoteTo(d16, code), d16, reinterpret_cast<uint16_t*>(dst + 2 * i));
   }
   for (; i < static_cast<size_t>(count); ++i) {
     const uint16_t code = float_to_half_bits(values[i]);
@@ -191,12 +192,12 @@ void EncodeHalfKernel(const float* values, int count, uint8_t* dst) {
 void DecodeHalfKernel(const uint8_t* src, int count, float* values) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
+  const hn::Rebind<uint16_t, decltype(di)> d16;
   const size_t n = hn::Lanes(df);
-  alignas(64) int32_t codes[64];
   size_t i = 0;
-  for (; i + n <= static_cast<size_t>(count) && n <= 64; i += n) {
-    for (size_t k = 0; k < n; ++k) codes[k] = src[2 * (i + k)] | (src[2 * (i + k) + 1] << 8);
-    hn::StoreU(hn::BitCast(df, half_value_bits(di, hn::Load(di, codes))), df, values + i);
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto code = hn::PromoteTo(di, hn::LoadU(d16, reinterpret_cast<const uint16_t*>(src + 2 * i)));
+    hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
     values[i] = half_bits_to_float(static_cast<uint16_t>(src[2 * i] | (src[2 * i + 1] << 8)));

@@ -1,13 +1,30 @@
 // Pixel conversions over runs of pixels (see pixel_format.h: quantize_pixels, encode_pixels,
-// decode_pixels): one format dispatch per run, the hot formats on SIMD lanes
-// (pixel_format_simd.h), everything else through the per-pixel functions.
+// decode_pixels): one format dispatch per run, every format on SIMD lanes (pixel_format_simd.h,
+// pixel_packed_simd.h).
 #include <cstring>
 
 #include "raster/pixel_format.h"
 #include "raster/pixel_format_simd.h"
+#include "raster/pixel_packed_simd.h"
 #include "raster/srgb8_tables.h"
 
 namespace ontile {
+namespace {
+
+// dst[4 i + 3] = float_to_unorm(src[i].w, 8), alphas gathered in chunks for the SIMD encoder.
+void encode_linear_alpha8(const glm::vec4* src, int count, uint8_t* dst) {
+  constexpr int kChunk = 64;
+  float alpha[kChunk];
+  uint8_t code[kChunk];
+  for (int first = 0; first < count; first += kChunk) {
+    const int n = count - first < kChunk ? count - first : kChunk;
+    for (int i = 0; i < n; ++i) alpha[i] = src[first + i].w;
+    encode_unorm8_simd(alpha, n, code);
+    for (int i = 0; i < n; ++i) dst[4 * (first + i) + 3] = code[i];
+  }
+}
+
+}  // namespace
 
 void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
   switch (format) {
@@ -35,6 +52,7 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
       quantize_half_simd(a, count);
       return;
     default:
+      if (quantize_packed_pixels(format, r, g, b, a, count)) return;
       for (int i = 0; i < count; ++i) {
         const glm::vec4 q = quantize_pixel(format, {r[i], g[i], b[i], a[i]});
         r[i] = q.x;
@@ -54,9 +72,7 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
       return;
     case PixelFormat::RGBA8_SRGB:
       encode_srgb8_simd(values, 4 * count, dst);
-      for (int i = 0; i < count; ++i) {  // alpha is always linear
-        dst[4 * i + 3] = static_cast<uint8_t>(float_to_unorm(src[i].w, 8));
-      }
+      encode_linear_alpha8(src, count, dst);  // alpha is always linear
       return;
     case PixelFormat::RGBA32_FLOAT:
       std::memcpy(dst, values, sizeof(glm::vec4) * static_cast<size_t>(count));
@@ -72,6 +88,7 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
       for (int i = 0; i < count; ++i) std::memcpy(dst + 4 * i, &src[i].x, 4);
       return;
     default: {
+      if (encode_packed_pixels(format, src, count, dst)) return;
       const int bytes = bytes_per_pixel(format);
       for (int i = 0; i < count; ++i) encode_pixel(format, src[i], dst + bytes * i);
     }
@@ -108,6 +125,7 @@ void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4*
       }
       return;
     default: {
+      if (decode_packed_pixels(format, src, count, dst)) return;
       const int bytes = bytes_per_pixel(format);
       for (int i = 0; i < count; ++i) dst[i] = decode_pixel(format, src + bytes * i);
     }

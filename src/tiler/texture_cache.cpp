@@ -48,11 +48,11 @@ TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
   const auto sets =
       static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
   tags_.assign(static_cast<size_t>(sets) * config_.ways, kEmptyWay);
-  lookup_.tags_ = tags_.data();
-  lookup_.ways_ = config_.ways;
-  lookup_.sets_ = sets;
-  lookup_.line_shift_ = std::countr_zero(config_.line_bytes / kGranuleBytes);
-  lookup_.sets_are_power_of_two_ = std::has_single_bit(sets);
+  sets_.tags = tags_.data();
+  sets_.ways = config_.ways;
+  sets_.sets = sets;
+  sets_.line_shift = std::countr_zero(config_.line_bytes / kGranuleBytes);
+  sets_.sets_are_power_of_two = std::has_single_bit(sets);
 }
 
 uint64_t TextureCache::frame_base_granule(uint64_t id) {

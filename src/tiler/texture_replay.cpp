@@ -1,157 +1,207 @@
-// The replay of a pass's texture traces through the texture-cache model (texture_cache.h), in
-// parallel yet with the counts of the serial replay: textures are placed in the frame in
-// first-use order (tiles in index order), then each thread replays the whole sequence for a
-// disjoint group of cache sets. A set's hits and misses depend only on the order of its own
-// accesses, which every thread sees in tile-index order, so the sums never depend on threads.
+// The replay of a pass's texture traces through the texture-cache model (texture_cache.h), with
+// the counts of a serial per-access replay in tile-index order at any thread count.
+//
+// Serial: one pass over the tiles, regions placed as they are met (first-use order).
+// Parallel: a set's hits and misses depend only on the order of its own accesses, so the sets are
+// split into G = 2^b groups, replayed by different threads, each seeing its accesses in tile
+// order. The group of a granule is the low b bits of its line, which are also bits of its set
+// (set counts that are powers of two >= G), and are the same in the traced and the frame address
+// (regions are placed on 4 KiB = 64-granule boundaries, so for lines of 64 << s bytes b <= 6 - s
+// bits are placement-independent). So, all in parallel over tiles, each tile's granules are
+// split by group into its worker's buffers while the regions it uses are listed; the regions are
+// then placed in tile order (serially, a few per tile), and each group replays its buffers in
+// tile order on a private copy of its sets. Other set counts and line sizes, and fewer than
+// kMinimumParallelThreads threads, replay serially.
 #include <algorithm>
-#include <array>
+#include <atomic>
+#include <bit>
 #include <span>
 #include <vector>
 
 #include <tbb/task_arena.h>
 
+#include "tiler/replay_scratch.h"
 #include "tiler/texture_cache.h"
+#include "tiler/texture_replay_kernel.h"
+#include "tiler/texture_replay_observer.h"
 #include "util/parallel_for.h"
 
 namespace ontile {
 namespace {
 
+std::atomic<TextureReplayObserver*> observer{nullptr};
+
 constexpr int kRegionShift = TextureCache::kRegionShiftGranules;
+// Granules per placement boundary: texture regions start on 4 KiB boundaries.
+constexpr int kPlacementAlignmentBits = 6;
 
-// Region id -> frame offset (TextureCache::place), kept in a small direct-mapped table: shaders
-// that sample several textures per quad switch region every 4-15 granules (deferred, cartoon and
-// forward frames of the benchmark scenes), and find the few regions of a frame here rather than
-// in the cache's map. Entries start as {0, 0}, which is region 0's offset.
-template <class Place>
-class OffsetMemo {
- public:
-  explicit OffsetMemo(Place place) : place_(place) {}
-  uint64_t offset(uint64_t id) {
-    Entry& entry = entries_[id % kEntries];
-    if (entry.id != id) entry = Entry{id, place_(id)};
-    return entry.offset;
-  }
-
- private:
-  static constexpr size_t kEntries = 64;
-  struct Entry {
-    uint64_t id = 0, offset = 0;
-  };
-  std::array<Entry, kEntries> entries_{};
-  Place place_;
-};
-
-// Calls visit(frame granule) for every traced granule, tiles in index order, and returns how
-// many calls returned true. The offset is looked up once per run of granules of one region; the
-// inner loop over a run calls nothing out of line, so its state stays in registers.
-template <class Place, class Visit>
-uint64_t count_frame_granules(const std::vector<TileTrace>& traces, Place place, Visit visit) {
-  OffsetMemo<Place> memo(place);
-  uint64_t count = 0;
-  for (const TileTrace& trace : traces) {
-    const std::span<const uint64_t> granules = trace.texture_granules.granules();
-    const uint64_t* next = granules.data();
-    const uint64_t* const end = next + granules.size();
-    while (next != end) {
-      const uint64_t id = *next >> kRegionShift;
-      const uint64_t offset = memo.offset(id);
-      uint64_t run_count = 0;
-      for (; next != end && (*next >> kRegionShift) == id; ++next) {
-        run_count += visit(*next + offset);
-      }
-      count += run_count;
-    }
-  }
-  return count;
+uint64_t place_region(void* cache, uint64_t id) {
+  return static_cast<TextureCache*>(cache)->place(id);
+}
+uint64_t placed_region(void* cache, uint64_t id) {
+  return static_cast<const TextureCache*>(cache)->placed_offset(id);
 }
 
-// Texture region ids of one tile's trace in first-use order (a tile reads few textures).
-std::vector<uint64_t> ids_in_first_use_order(std::span<const uint64_t> granules) {
-  std::vector<uint64_t> ids;
-  uint64_t last = 0;
-  for (const uint64_t g : granules) {
-    const uint64_t id = g >> kRegionShift;
-    if (id == 0 || id == last) continue;
-    last = id;
-    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
-  }
-  return ids;
-}
-
-TextureTraffic traffic_of(uint64_t accesses, uint64_t hits, const TextureCache& cache) {
+TextureTraffic traffic_of(uint64_t accesses, uint64_t misses, const TextureCache& cache) {
   TextureTraffic traffic;
   traffic.accesses = accesses;
-  traffic.hits = hits;
-  traffic.misses = accesses - hits;
-  traffic.bytes_read = traffic.misses * cache.config().line_bytes;
+  traffic.hits = accesses - misses;
+  traffic.misses = misses;
+  traffic.bytes_read = misses * cache.config().line_bytes;
   return traffic;
 }
 
-// One thread: places regions as it meets them, a single pass.
-template <bool kPowerOfTwoSets>
 TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces) {
-  uint64_t accesses = 0;
-  for (const TileTrace& trace : traces) accesses += trace.texture_granules.granules().size();
-  const TextureCache::Lookup lookup = cache.lookup();
-  // Counts misses, the rare outcome, so a hit in the most recent way costs no addition.
-  const uint64_t misses = count_frame_granules(
-      traces, [&](uint64_t id) { return cache.place(id); },
-      [lookup](uint64_t frame_granule) {
-        return !lookup.access_in<kPowerOfTwoSets>(frame_granule);
-      });
-  return traffic_of(accesses, accesses - misses, cache);
+  RegionTable regions(place_region, &cache);
+  uint64_t accesses = 0, misses = 0;
+  for (const TileTrace& trace : traces) {
+    const std::span<const uint64_t> granules = trace.texture_granules.granules();
+    accesses += granules.size();
+    misses += replay_granules(cache.sets(), regions, granules.data(), granules.size());
+  }
+  return traffic_of(accesses, misses, cache);
 }
 
-// The accesses to the sets of one group (group_of_set[set] == group), regions already placed.
-template <bool kPowerOfTwoSets>
-TextureTraffic replay_group(const TextureCache& cache, TextureCache::Lookup lookup,
-                            const std::vector<TileTrace>& traces,
-                            const std::vector<uint32_t>& group_of_set, uint32_t group) {
-  const uint32_t* group_of = group_of_set.data();
+// Splitting the granules by group costs about twice what replaying them costs (callgrind, demo
+// cartoon 960x540: 21 and 11 instructions per access), so fewer threads than this replay faster
+// serially.
+constexpr int kMinimumParallelThreads = 4;
+
+// log2 of the number of set groups for `threads` threads: enough groups for every thread, no
+// more than the placement-independent bits and the sets allow; 0 = replay serially.
+int group_bits_for(const SetArray& sets, int threads) {
+  if (threads < kMinimumParallelThreads || !sets.sets_are_power_of_two) return 0;
+  const int wanted = std::bit_width(static_cast<unsigned>(threads - 1));  // ceil(log2(threads))
+  const int placement_independent = std::max(0, kPlacementAlignmentBits - sets.line_shift);
+  return std::min({wanted, placement_independent, std::countr_zero(sets.sets)});
+}
+
+// One tile: its granules appended to its worker's group buffers (group = low bits of the line),
+// its regions (id != 0) appended to the worker's list in first-use order.
+void split_tile(std::span<const uint64_t> granules, int line_shift, int group_bits,
+                ReplayScratch::Worker& worker, size_t* ranges) {
+  const size_t groups = size_t{1} << group_bits;
+  uint64_t* write[size_t{1} << kPlacementAlignmentBits];
+  for (size_t k = 0; k < groups; ++k) {
+    write[k] = worker.groups[k].reserve_tail(granules.size());
+    ranges[2 * k] = worker.groups[k].size();
+  }
+  const uint64_t group_mask = groups - 1;
+  const size_t ids_begin = worker.region_ids.size();
+  // Shaders sampling two textures alternate between them every few granules: the region before
+  // the last one is checked before the tile's list.
+  uint64_t last_id = ~uint64_t{0}, previous_id = ~uint64_t{0};
+  for (const uint64_t granule : granules) {
+    const uint64_t id = granule >> kRegionShift;
+    if (id != last_id) {
+      const uint64_t left = last_id;
+      last_id = id;
+      if (id != previous_id) {
+        const auto first = worker.region_ids.begin() + static_cast<std::ptrdiff_t>(ids_begin);
+        if (id != 0 && std::find(first, worker.region_ids.end(), id) == worker.region_ids.end()) {
+          worker.region_ids.push_back(id);
+        }
+      }
+      previous_id = left;
+    }
+    *write[(granule >> line_shift) & group_mask]++ = granule;
+  }
+  for (size_t k = 0; k < groups; ++k) {
+    const size_t end = static_cast<size_t>(write[k] - worker.groups[k].data());
+    ranges[2 * k + 1] = end;
+    worker.groups[k].resize_within_capacity(end);
+  }
+}
+
+// Group k's sets (set & (G - 1) == k), as set index j = set >> b in a SetArray of their own, so
+// no two threads write one cache line of ways.
+SetArray group_sets(const SetArray& all, int group_bits, std::vector<uint64_t>& storage) {
+  SetArray group = all;
+  group.sets = all.sets >> group_bits;
+  group.index_shift = group_bits;
+  storage.resize(static_cast<size_t>(group.sets) * all.ways);
+  group.tags = storage.data();
+  return group;
+}
+
+// Copies group k's ways between the cache's SetArray and the group's own (to_group: into it).
+void copy_group_ways(const SetArray& all, const SetArray& group, uint32_t k, int group_bits,
+                     bool to_group) {
+  for (uint32_t way = 0; way < all.ways; ++way) {
+    uint64_t* cache_way = all.tags + static_cast<size_t>(way) * all.sets + k;
+    uint64_t* group_way = group.tags + static_cast<size_t>(way) * group.sets;
+    for (uint32_t j = 0; j < group.sets; ++j) {
+      uint64_t& in_cache = cache_way[static_cast<size_t>(j) << group_bits];
+      if (to_group) {
+        group_way[j] = in_cache;
+      } else {
+        in_cache = group_way[j];
+      }
+    }
+  }
+}
+
+TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>& traces,
+                               int threads, int group_bits) {
+  const SetArray& sets = cache.sets();
+  const size_t groups = size_t{1} << group_bits;
+  const size_t tile_count = traces.size();
+  const ReplayScratchLease scratch;
+  scratch->prepare(tile_count, static_cast<size_t>(threads), groups);
+  // 1. Split every tile's granules by group, listing the regions each tile uses.
+  ontile::parallel_for(size_t{0}, tile_count, [&](size_t t) {
+    const auto worker = static_cast<uint32_t>(tbb::this_task_arena::current_thread_index());
+    ReplayScratch::Worker& w = scratch->workers[worker];
+    ReplayScratch::Tile& tile = scratch->tiles[t];
+    tile.worker = worker;
+    tile.region_ids_begin = static_cast<uint32_t>(w.region_ids.size());
+    split_tile(traces[t].texture_granules.granules(), sets.line_shift, group_bits, w,
+               &scratch->group_ranges[2 * t * groups]);
+    tile.region_ids_end = static_cast<uint32_t>(w.region_ids.size());
+  });
+  // 2. Regions placed in first-use order: tiles in index order, each tile's in its order.
   uint64_t accesses = 0;
-  const uint64_t hits = count_frame_granules(
-      traces, [&](uint64_t id) { return cache.placed_offset(id); },
-      [&accesses, lookup, group_of, group](uint64_t frame_granule) {
-        const uint64_t line = lookup.line_of(frame_granule);
-        const uint32_t set = lookup.set_in<kPowerOfTwoSets>(line);
-        if (group_of[set] != group) return false;
-        ++accesses;
-        return lookup.access_line(line, set);
-      });
-  return traffic_of(accesses, hits, cache);
+  for (size_t t = 0; t < tile_count; ++t) {
+    const ReplayScratch::Tile& tile = scratch->tiles[t];
+    const std::vector<uint64_t>& ids = scratch->workers[tile.worker].region_ids;
+    for (uint32_t i = tile.region_ids_begin; i < tile.region_ids_end; ++i) cache.place(ids[i]);
+    accesses += traces[t].texture_granules.granules().size();
+  }
+  // 3. Each group's accesses in tile order, on its own copy of its sets.
+  std::vector<uint64_t> group_misses(groups, 0);
+  ontile::parallel_for(size_t{0}, groups, [&](size_t k) {
+    const SetArray group = group_sets(sets, group_bits, scratch->group_tags[k]);
+    copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, true);
+    RegionTable regions(placed_region, &cache);
+    uint64_t misses = 0;
+    for (size_t t = 0; t < tile_count; ++t) {
+      const size_t* range = &scratch->group_ranges[2 * (t * groups + k)];
+      const uint64_t* granules = scratch->workers[scratch->tiles[t].worker].groups[k].data();
+      misses += replay_granules(group, regions, granules + range[0], range[1] - range[0]);
+    }
+    copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, false);
+    group_misses[k] = misses;
+  });
+  uint64_t misses = 0;
+  for (const uint64_t m : group_misses) misses += m;
+  return traffic_of(accesses, misses, cache);
 }
 
 }  // namespace
 
+void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
+  observer.store(replay_observer);
+}
+
 TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
-  const uint32_t groups = std::min<uint32_t>(
-      std::max(1, tbb::this_task_arena::max_concurrency()), cache.set_count());
-  const bool power_of_two_sets = cache.lookup().sets_are_power_of_two();
-  if (groups == 1) {
-    return power_of_two_sets ? replay_serial<true>(cache, traces)
-                             : replay_serial<false>(cache, traces);
-  }
-  const int tiles = static_cast<int>(traces.size());
-  // 1. Placement: distinct ids per tile in parallel, then placed in tile order.
-  std::vector<std::vector<uint64_t>> tile_ids(tiles);
-  ontile::parallel_for(0, tiles, [&](int t) {
-    tile_ids[t] = ids_in_first_use_order(traces[t].texture_granules.granules());
-  });
-  for (const auto& ids : tile_ids) {
-    for (const uint64_t id : ids) cache.place(id);
-  }
-  // 2. LRU replay, sets partitioned among threads; each reads the placement, none changes it.
-  std::vector<uint32_t> group_of_set(cache.set_count());
-  for (uint32_t set = 0; set < cache.set_count(); ++set) group_of_set[set] = set % groups;
-  std::vector<TextureTraffic> partial(groups);
-  const TextureCache::Lookup lookup = cache.lookup();
-  ontile::parallel_for(uint32_t{0}, groups, [&](uint32_t group) {
-    partial[group] = power_of_two_sets
-                         ? replay_group<true>(cache, lookup, traces, group_of_set, group)
-                         : replay_group<false>(cache, lookup, traces, group_of_set, group);
-  });
-  TextureTraffic traffic;
-  for (const TextureTraffic& p : partial) traffic.add(p);
+  TextureReplayObserver* const watching = observer.load();
+  if (watching != nullptr) watching->before_replay(cache, traces);
+  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
+  const int group_bits = group_bits_for(cache.sets(), threads);
+  const TextureTraffic traffic = group_bits == 0
+                                     ? replay_serial(cache, traces)
+                                     : replay_parallel(cache, traces, threads, group_bits);
+  if (watching != nullptr) watching->after_replay(cache, traffic);
   return traffic;
 }
 

@@ -5,6 +5,7 @@
 #include "tiler/tile_load_store.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace ontile {
 namespace {
@@ -27,23 +28,48 @@ void load_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileR
       decode_pixels(desc.format, src, n, color + first);
       continue;
     }
+    if (desc.format == PixelFormat::D32_FLOAT) {  // the stored bytes are the float's
+      std::memcpy(depth + first, src, sizeof(float) * static_cast<size_t>(n));
+      continue;
+    }
     decode_pixels(desc.format, src, n, row);
     for (int i = 0; i < n; ++i) depth[first + i] = row[i].x;
   }
 }
 
+// Stores and/or resolves one attachment row by row: the samples' row encoded as it is, and each
+// pixel's samples averaged in sample order (Vulkan's resolve for float/UNORM formats; the sum
+// starts at 0 and is divided by the sample count, as the per-pixel path does) and encoded as a row.
 void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileRect& rect,
-                           int samples, const TileMemory& memory, int attachment) {
+                           int samples, const TileMemory& memory, int attachment, bool store,
+                           bool resolve) {
   const int n = rect.width * samples;
   glm::vec4 row[kMaxRowValues];
+  glm::vec4 resolved[kMaxRowValues];
   for (int ly = 0; ly < rect.height; ++ly) {
     const size_t first = memory.index(0, ly, 0);
     const glm::vec4* values = memory.color_plane(attachment) + first;
+    if (is_depth && desc.format == PixelFormat::D32_FLOAT && store && !resolve) {
+      std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly), memory.depth_plane() + first,
+                  sizeof(float) * static_cast<size_t>(n));  // the stored bytes are the float's
+      continue;
+    }
     if (is_depth) {
       for (int i = 0; i < n; ++i) row[i] = glm::vec4(memory.depth_plane()[first + i], 0.0f, 0.0f, 1.0f);
       values = row;
     }
-    encode_pixels(desc.format, values, n, desc.surface->pixel_bytes(rect.x0, rect.y0 + ly));
+    if (store) {
+      encode_pixels(desc.surface->format(), values, n,
+                    desc.surface->pixel_bytes(rect.x0, rect.y0 + ly));
+    }
+    if (!resolve) continue;
+    for (int lx = 0; lx < rect.width; ++lx) {
+      glm::vec4 sum(0.0f);
+      for (int s = 0; s < samples; ++s) sum += values[lx * samples + s];
+      resolved[lx] = sum / static_cast<float>(samples);
+    }
+    encode_pixels(desc.resolve_surface->format(), resolved, rect.width,
+                  desc.resolve_surface->pixel_bytes(rect.x0, rect.y0 + ly));
   }
 }
 
@@ -100,8 +126,10 @@ void store_tile(const RenderPassDesc& pass, const TileRect& rect, const TileMemo
                           desc.store == StoreAction::StoreAndResolve) &&
                          desc.resolve_surface != nullptr;
     if (!store && !resolve) continue;
-    if (store && !resolve && desc.surface->samples() == samples && row_fits(rect, samples)) {
-      store_attachment_rows(desc, is_depth, rect, samples, memory, static_cast<int>(a));
+    if ((!store || desc.surface->samples() == samples) &&
+        (!resolve || desc.resolve_surface->samples() == 1) && row_fits(rect, samples)) {
+      store_attachment_rows(desc, is_depth, rect, samples, memory, static_cast<int>(a), store,
+                            resolve);
       continue;
     }
     for (int ly = 0; ly < rect.height; ++ly) {

@@ -1,6 +1,7 @@
 // The row and batch conversions (quantize_pixels, encode_pixels, decode_pixels) against the
 // per-pixel functions, bit for bit, for every format and on every SIMD target: values around
-// every 8-bit UNORM and sRGB rounding boundary, specials (NaN, +-Inf, -0, subnormals) and
+// every 8-bit UNORM and sRGB rounding boundary, the 16/24-bit UNORM, binary16, 11/10-bit float
+// and stencil ties, specials (NaN, +-Inf, -0, subnormals) and
 // random values, in runs whose lengths do not divide the vector width.
 #include <gtest/gtest.h>
 
@@ -63,6 +64,36 @@ std::vector<float> test_values() {
                         8.940697e-8f, 6.1035156e-5f, 6.1035152e-5f}) {
     v.push_back(x);
     v.push_back(-x);
+  }
+  // Unsigned 11/10-bit floats (RG11B10F) drop 17 and 18 mantissa bits: the same patterns just
+  // below, at and above their ties, over their normal and subnormal range.
+  for (uint32_t exponent = 100; exponent <= 143; ++exponent) {
+    for (const uint32_t kept : {0u, 1u, 0x1Eu, 0x1Fu, 0x3Eu, 0x3Fu}) {
+      for (const int drop : {17, 18}) {
+        const uint32_t tie = 1u << (drop - 1);
+        for (const uint32_t dropped : {tie - 1, tie, tie + 1, 2 * tie - 1}) {
+          v.push_back(std::bit_cast<float>((exponent << 23) | (kept << drop) | dropped));
+        }
+      }
+    }
+  }
+  for (const float x : {65024.0f, 64512.0f, 65535.0f, 1e30f, 3.0e-5f}) v.push_back(x);
+  // 16- and 24-bit UNORM ties (D16, RG16, D24S8 depth), and D24S8 stencil values around every
+  // rounding tie k + 0.5 and past 255.
+  for (int c = 0; c < 65535; c += 97) {
+    for (const double denominator : {65535.0, 16777215.0}) {
+      const float boundary = static_cast<float>((c + 0.5) / denominator);
+      v.push_back(std::nextafter(boundary, 0.0f));
+      v.push_back(boundary);
+      v.push_back(std::nextafter(boundary, 2.0f));
+    }
+  }
+  for (int k = -1; k <= 256; ++k) {
+    const float tie = static_cast<float>(k) + 0.5f;
+    v.push_back(std::nextafter(tie, -1000.0f));
+    v.push_back(tie);
+    v.push_back(std::nextafter(tie, 1000.0f));
+    v.push_back(static_cast<float>(k));
   }
   v.push_back(std::bit_cast<float>(0x7F800001u));
   v.push_back(std::bit_cast<float>(0xFFC00001u));

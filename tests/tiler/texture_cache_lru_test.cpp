@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 
-#include <list>
 #include <map>
 #include <memory>
 #include <random>
@@ -19,65 +18,10 @@
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "tiler/trace_buffers.h"
+#include "tiler/reference_lru.h"
 
 namespace ontile {
 namespace {
-
-// The definition, with no attention to speed: each set a list of lines, most recent first.
-class ReferenceLru {
- public:
-  explicit ReferenceLru(const TextureCacheConfig& c)
-      : granules_per_line_(c.line_bytes / 64), ways_(c.ways),
-        sets_(c.size_bytes / (c.line_bytes * c.ways)) {}
-  bool access(uint64_t frame_granule) {
-    const uint64_t line = frame_granule / granules_per_line_;
-    std::list<uint64_t>& set = sets_[line % sets_.size()];
-    for (auto it = set.begin(); it != set.end(); ++it) {
-      if (*it == line) {
-        set.erase(it);
-        set.push_front(line);
-        return true;
-      }
-    }
-    set.push_front(line);
-    if (set.size() > ways_) set.pop_back();
-    return false;
-  }
-  // Frame granule of a traced one: regions (id = granule >> 34) placed one after another, from
-  // granule 2^34, in the order of their first access, each its reserved size rounded to 64 B.
-  uint64_t frame_granule(uint64_t traced) {
-    const uint64_t id = traced >> 34;
-    if (id == 0) return traced;
-    auto it = base_.find(id);
-    if (it == base_.end()) {
-      it = base_.emplace(id, next_).first;
-      next_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
-    }
-    return it->second + (traced & ((uint64_t{1} << 34) - 1));
-  }
-  TextureTraffic replay(const std::vector<std::vector<uint64_t>>& tiles, uint32_t line_bytes) {
-    TextureTraffic t;
-    for (const auto& tile : tiles) {
-      for (const uint64_t g : tile) {
-        ++t.accesses;
-        if (access(frame_granule(g))) {
-          ++t.hits;
-        } else {
-          ++t.misses;
-        }
-      }
-    }
-    t.bytes_read = t.misses * line_bytes;
-    return t;
-  }
-
- private:
-  uint64_t granules_per_line_;
-  size_t ways_;
-  std::vector<std::list<uint64_t>> sets_;
-  std::map<uint64_t, uint64_t> base_;
-  uint64_t next_ = uint64_t{1} << 34;
-};
 
 TextureCacheConfig config(uint32_t sets, uint32_t line_bytes, uint32_t ways) {
   return TextureCacheConfig{sets * line_bytes * ways, line_bytes, ways};
