@@ -3,6 +3,7 @@
 // encode_pixel/decode_pixel use, minus the byte packing, so the two agree bit for bit.
 #include "raster/pixel_format.h"
 
+#include "raster/packed_bytes.h"
 #include "raster/srgb8_tables.h"
 
 #include <bit>
@@ -160,19 +161,7 @@ uint32_t encode_stencil(float value) {
   return static_cast<uint32_t>(std::floor(value + 0.5f));
 }
 
-void store_u16(uint8_t* dst, uint32_t v) {
-  dst[0] = static_cast<uint8_t>(v);
-  dst[1] = static_cast<uint8_t>(v >> 8);
-}
-void store_u32(uint8_t* dst, uint32_t v) {
-  for (int i = 0; i < 4; ++i) dst[i] = static_cast<uint8_t>(v >> (8 * i));
-}
-uint32_t load_u16(const uint8_t* src) { return src[0] | (uint32_t{src[1]} << 8); }
-uint32_t load_u32(const uint8_t* src) {
-  return src[0] | (uint32_t{src[1]} << 8) | (uint32_t{src[2]} << 16) | (uint32_t{src[3]} << 24);
-}
-void store_f32(uint8_t* dst, float v) { store_u32(dst, std::bit_cast<uint32_t>(v)); }
-float load_f32(const uint8_t* src) { return std::bit_cast<float>(load_u32(src)); }
+using namespace packed_bytes;
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "raster/packed_bytes.h"
 #include "raster/pixel_format_simd.h"
 #include "raster/pixel_packed_simd.h"
 
@@ -13,17 +14,7 @@ namespace {
 
 constexpr int kChunkPixels = 64;
 
-void store_u16(uint8_t* dst, uint32_t v) {
-  dst[0] = static_cast<uint8_t>(v);
-  dst[1] = static_cast<uint8_t>(v >> 8);
-}
-void store_u32(uint8_t* dst, uint32_t v) {
-  for (int i = 0; i < 4; ++i) dst[i] = static_cast<uint8_t>(v >> (8 * i));
-}
-uint32_t load_u16(const uint8_t* src) { return src[0] | (uint32_t{src[1]} << 8); }
-uint32_t load_u32(const uint8_t* src) {
-  return src[0] | (uint32_t{src[1]} << 8) | (uint32_t{src[2]} << 16) | (uint32_t{src[3]} << 24);
-}
+using namespace packed_bytes;
 
 // Per-thread scratch of one chunk's channels and codes. Thread-local rather than on the stack:
 // zeroed once (stack arrays would be zeroed per chunk, or GCC warns that the kernels may read

@@ -11,20 +11,12 @@
 #include "pipelines/render_frame.h"
 #include "scene/gen/scene_generator.h"
 #include "scene/gltf_loader.h"
+#include "support/generated_scene.h"
 
 namespace ontile {
 namespace {
 
-Scene generated_scene(const std::string& name, double size) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("ontile_determinism_" + name + "_" + std::to_string(getpid()) + ".glb");
-  SceneGenOptions options;
-  options.size = size;
-  generate_scene(name, options, path);
-  Scene scene = load_gltf(path);
-  std::filesystem::remove(path);
-  return scene;
-}
+using test::generated_scene;
 
 nlohmann::json report_without_timing(const FrameReport& report) {
   nlohmann::json j = frame_report_json(report);

@@ -16,6 +16,7 @@
 #include "pipelines/render_frame.h"
 #include "scene/gen/scene_generator.h"
 #include "scene/gltf_loader.h"
+#include "support/generated_scene.h"
 #include "tiler/reference_lru.h"
 #include "tiler/texture_replay_observer.h"
 
@@ -64,16 +65,7 @@ struct ObserverInstalled {
   ~ObserverInstalled() { set_texture_replay_observer(nullptr); }
 };
 
-Scene generated_scene(const std::string& name, double size) {
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("ontile_replay_" + name + "_" + std::to_string(getpid()) + ".glb");
-  SceneGenOptions options;
-  options.size = size;
-  generate_scene(name, options, path);
-  Scene scene = load_gltf(path);
-  std::filesystem::remove(path);
-  return scene;
-}
+using test::generated_scene;
 
 const char* const kPipelines[] = {"lambert", "forward",           "deferred-subpass",
                                   "deferred-classic", "cartoon", "cartoon-multipass",
