@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 
 namespace ontile {
 namespace {

@@ -6,7 +6,7 @@
 #include "util/heap_tuning.h"
 
 #include "bench_scenes.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 
 namespace ontile {
 namespace {

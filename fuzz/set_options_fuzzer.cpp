@@ -9,7 +9,7 @@
 #include <string>
 
 #include "fuzz_scratch.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gen/scene_generator.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"

@@ -13,7 +13,7 @@ namespace {
 
 struct AccuracyOptions {
   std::string scene, json, size = "1280x720", pipeline = "lambert";
-  bool allow_outside_files = false;
+  bool allow_outside_files = false, progress = false;
   int camera = -1, threads = 0;
 };
 
@@ -28,7 +28,8 @@ void run_accuracy(const AccuracyOptions& o) {
   }
   if (!o.json.empty()) check_output_option("--json", o.json, true);
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
-  const AccuracyRun run = measure_accuracy(scene, settings);
+  Progress progress("accuracy", o.progress);
+  const AccuracyRun run = measure_accuracy(scene, settings, progress.callback());
   RunOutputs outputs;
   if (!o.json.empty()) {
     nlohmann::json j = accuracy_json(run.metrics);
@@ -55,6 +56,7 @@ void add_accuracy_command(CLI::App& app) {
   cmd->add_option("--pipeline", o->pipeline, "Pipeline to check (only lambert has a reference)");
   cmd->add_option("--threads", o->threads, "Rasterizer worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--json", o->json, "Write the metrics as JSON here (- for standard output)");
+  add_progress_flag(cmd, o->progress);
   cmd->callback([o] { run_accuracy(*o); });
 }
 

@@ -12,7 +12,7 @@ namespace ontile::cli {
 void add_golden_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("golden", "Compare the golden images (or rewrite them with --update)");
   struct Options {
-    bool update = false;
+    bool update = false, progress = false;
     std::string golden_dir = std::string(ONTILE_SOURCE_DIR) + "/golden";
     std::string failure_dir = "out/golden_failures";
     std::string shared_assets = std::string(ONTILE_SOURCE_DIR) + "/../shared/assets";
@@ -22,13 +22,17 @@ void add_golden_command(CLI::App& app) {
   cmd->add_option("--dir", o->golden_dir, "Golden image folder");
   cmd->add_option("--failures", o->failure_dir, "Where mismatches write actual and diff images");
   cmd->add_option("--assets", o->shared_assets, "Shared assets folder");
+  add_progress_flag(cmd, o->progress);
   cmd->callback([o] {
     std::error_code ec;
     if (!std::filesystem::is_directory(o->golden_dir, ec)) {
       throw UsageError("--dir " + o->golden_dir + ": folder does not exist");
     }
-    int failures = 0;
-    for (const GoldenCase& c : golden_cases(ONTILE_SOURCE_DIR, o->shared_assets)) {
+    int failures = 0, done = 0;
+    Progress progress("golden", o->progress);
+    const std::vector<GoldenCase> cases = golden_cases(ONTILE_SOURCE_DIR, o->shared_assets);
+    for (const GoldenCase& c : cases) {
+      progress.step(++done, static_cast<int>(cases.size()), c.name);
       const GoldenResult r = run_golden_case(c, o->golden_dir, o->failure_dir, o->update);
       const char* status[] = {"match", "MISMATCH", "MISSING", "updated", "skipped"};
       std::printf("%-28s %-9s %s\n", c.name.c_str(), status[static_cast<int>(r.status)], r.message.c_str());

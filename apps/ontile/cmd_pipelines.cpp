@@ -2,7 +2,7 @@
 #include <cstdio>
 
 #include "commands.h"
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline.h"
 
 namespace ontile::cli {
 

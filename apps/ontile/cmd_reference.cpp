@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "commands.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "reference/reference_renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
@@ -14,7 +14,7 @@ namespace {
 
 struct ReferenceOptions {
   std::string scene, out, size = "1280x720";
-  bool allow_outside_files = false;
+  bool allow_outside_files = false, progress = false;
   int camera = -1, spp = 1;
 };
 
@@ -35,7 +35,8 @@ void run_reference(const ReferenceOptions& o) {
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   const Camera camera = select_camera(scene, o.camera);
   const LambertReferenceScene ref = make_lambert_reference_scene(scene, camera, width_px, height_px);
-  const ReferenceImage image = render_reference(ref, width_px, height_px, o.spp);
+  Progress progress("reference", o.progress);
+  const ReferenceImage image = render_reference(ref, width_px, height_px, o.spp, progress.callback());
   write_reference_exr(out, image);
   std::printf("%s: %dx%d reference, %d samples per pixel, %llu triangles; wrote %s\n", o.scene.c_str(),
               width_px, height_px, o.spp, static_cast<unsigned long long>(ref.geometry->triangle_count()),
@@ -53,6 +54,7 @@ void add_reference_command(CLI::App& app) {
       ->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 1280x720)");
   cmd->add_option("--spp", o->spp, "Samples per pixel: a perfect square 1, 4, 9, ... 256 (stratified grid; default 1)");
+  add_progress_flag(cmd, o->progress);
   cmd->callback([o] { run_reference(*o); });
 }
 

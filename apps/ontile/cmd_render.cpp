@@ -8,10 +8,11 @@
 #include <optional>
 
 #include "commands.h"
+#include "aov/aov_pass.h"
 #include "context/frame_report.h"
 #include "io/image_io.h"
-#include "pipelines/aov/aov_pass.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
+#include "render_report.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
@@ -22,7 +23,7 @@ namespace {
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
               render_graph = "off";
-  bool allow_outside_files = false;
+  bool allow_outside_files = false, progress = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
@@ -30,11 +31,14 @@ struct RenderOptions {
 };
 
 // Renders once (the warm-up when timing), then `frames` more times with each frame timed by the
-// wall clock of the whole render call; returns the last frame.
+// wall clock of the whole render call; returns the last frame. Progress counts the timed frames.
 template <class Render>
-auto render_timed(int frames, std::vector<double>& ms, Render&& render) {
+auto render_timed(int frames, std::vector<double>& ms, bool show_progress, Render&& render) {
+  Progress progress("render", show_progress);
+  if (frames) progress.step(0, frames, "warm-up frame");
   auto frame = render();
   for (int i = 0; i < frames; ++i) {
+    progress.step(i + 1, frames, "timed frame");
     const auto start = std::chrono::steady_clock::now();
     frame = render();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
@@ -76,6 +80,10 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
   }
 }
 
+RenderRun run_of(const RenderOptions& o, const RenderSettings& settings) {
+  return {o.scene, settings, o.aov, o.frames};
+}
+
 // --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
 // --set msaa=N, each pixel's sample 0: aov_pass.h).
 void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
@@ -83,10 +91,10 @@ void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunO
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::vector<double> ms;
   const AovFrame frame =
-      render_timed(o.frames.value_or(0), ms, [&] { return render_aov_frame(scene, settings, {kind}); });
+      render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_aov_frame(scene, settings, {kind}); });
   write_exr_channels(o.out, settings.width_px, settings.height_px, aov_channel_names(kind),
                      aov_channels(*frame.surfaces[0], kind), &outputs.files());
-  if (!o.report.empty()) outputs.text(o.report, frame_report_json(frame.report).dump(2) + "\n");
+  if (!o.report.empty()) outputs.text(o.report, render_report_json(frame.report, run_of(o, settings)).dump(2) + "\n");
   outputs.commit();
   std::FILE* summary = summary_stream(is_stdout(o.report));
   std::fprintf(summary, "%s: %dx%d, AOV %s, %d samples per pixel (sample 0 written), %.1f ms on %d threads\n",
@@ -186,10 +194,10 @@ void run_render(const RenderOptions& o) {
   }
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::vector<double> ms;
-  const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, [&] { return render_frame(scene, settings); });
+  const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_frame(scene, settings); });
   const FrameReport& report = frame.outputs.report;
   write_color(o.out, *frame.outputs.color, outputs.files());
-  if (!o.report.empty()) outputs.text(o.report, frame_report_json(report).dump(2) + "\n");
+  if (!o.report.empty()) outputs.text(o.report, render_report_json(report, run_of(o, settings)).dump(2) + "\n");
   outputs.commit();
   std::FILE* summary = summary_stream(is_stdout(o.report));
   print_summary(summary, o, settings, scene, report);
@@ -223,6 +231,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--frames", o->frames,
                   "Render N more frames after one warm-up and print their median and minimum time (ms); "
                   "the outputs are the last frame's");
+  add_progress_flag(cmd, o->progress);
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));

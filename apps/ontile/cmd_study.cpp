@@ -14,7 +14,7 @@ namespace {
 
 struct StudyOptions {
   std::string scene, size = "2220x1080", markdown;
-  bool allow_outside_files = false;
+  bool allow_outside_files = false, progress = false;
   StudySettings settings;
 };
 
@@ -24,6 +24,8 @@ void run_deferred_study(const StudyOptions& o) {
   if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
+  Progress progress("study", o.progress);
+  s.progress = progress.callback();
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
   const std::string md = deferred_study_markdown(rows, s, std::filesystem::path(o.scene).filename().string());
   // The tables always go to standard output; --markdown - asks for nothing more.
@@ -52,6 +54,7 @@ void add_study_command(CLI::App& app) {
                   "Model an L2 for parameter-buffer reads, in KiB (default 0: none)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  add_progress_flag(cmd, o->progress);
   cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
   cmd->callback([o] { run_deferred_study(*o); });
 }

@@ -19,7 +19,7 @@ namespace {
 
 struct SweepOptions {
   std::string scene, csv, plot, size = "640x360";
-  bool allow_outside_files = false;
+  bool allow_outside_files = false, progress = false;
   int camera = -1, frames = 5, threads = 0, spp = 64;
 };
 
@@ -47,6 +47,8 @@ void run_sweep_command(const SweepOptions& o) {
   parse_size(o.size, config.width_px, config.height_px);
   config.camera_index = o.camera;
   config.frames = o.frames;
+  Progress progress("sweep", o.progress);
+  config.steps = progress.callback();
   config.threads = o.threads;
   config.reference_spp = o.spp;
   try {
@@ -100,6 +102,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--spp", o->spp, "Reference samples per pixel, a perfect square (default 64)");
   cmd->add_option("--csv", o->csv, "Write the measurements here (.csv, or - for standard output)")->required();
   cmd->add_option("--plot", o->plot, "Write the error-vs-time plot here (.png)")->required();
+  add_progress_flag(cmd, o->progress);
   cmd->callback([o] { run_sweep_command(*o); });
 }
 

@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 #include "util/atomic_file.h"
 #include "util/error.h"
+#include "util/progress.h"
 
 namespace ontile::cli {
 
@@ -39,6 +40,7 @@ void add_reference_command(CLI::App& app);
 void add_accuracy_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_diff_command(CLI::App& app);
 
 // The largest --size side in pixels: the render target limit (kMaxTargetSizePx).
 int max_image_side_px();
@@ -52,6 +54,11 @@ void add_scene_options(CLI::App* cmd, std::string& scene, bool& allow_outside_fi
                        const std::string& description);
 // Loads the glTF scene with the loader options the verb's flags chose.
 Scene load_scene(const std::string& scene, bool allow_outside_files);
+
+// --progress: progress on stderr even when it is not a terminal (util/progress.h).
+inline void add_progress_flag(CLI::App* cmd, bool& progress) {
+  cmd->add_flag("--progress", progress, "Print progress on stderr even when it is not a terminal (a log)");
+}
 
 // "-" as a report path means standard output.
 inline bool is_stdout(const std::string& path) { return path == "-"; }

@@ -14,7 +14,7 @@
 #include "gl_cartoon_programs.h"
 #include "gl_scene.h"
 #include "pipelines/cartoon/toon_shaders.h"
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 
 namespace ontile::peer {
 

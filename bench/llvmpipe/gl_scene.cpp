@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "gl_state.h"
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 #include "raster/pixel_format.h"
 #include "util/error.h"
 

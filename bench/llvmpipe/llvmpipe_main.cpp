@@ -21,8 +21,8 @@
 #include "gl_state.h"
 #include "gl_scene.h"
 #include "io/image_io.h"
-#include "pipelines/lit_shader.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/lit/lit_shader.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 

@@ -3,6 +3,7 @@
 // edge material's factory (toon_shaders.cpp) line for line.
 #include "cartoon_reference.h"
 
+#include "context/attachment.h"
 #include "context/camera_matrices.h"
 #include "context/scene_renderers.h"
 #include "pipelines/cartoon/toon_shaders.h"
@@ -13,10 +14,6 @@
 
 namespace ontile::peer {
 namespace {
-
-AttachmentDesc target(const char* name, Surface* s, glm::vec4 clear = glm::vec4(0.0f)) {
-  return {name, s->format(), LoadAction::Clear, StoreAction::Store, clear, s, nullptr};
-}
 
 // The edge material with the scene colour replaced by black and the border by opaque white:
 // SobelEdgeShader then writes mix(0, 1, edge) = 1 on an edge and 0 elsewhere.
@@ -70,8 +67,10 @@ CartoonReference render_cartoon_reference(const Scene& scene, const RenderSettin
   Surface* mask = ctx.create_surface("edge mask", PixelFormat::RGBA8_UNORM, w, h);
 
   ctx.begin_render_pass("toon MRT", w, h, 1,
-                        {target("color", color), target("normals", normals), target("border", border),
-                         target("depth", depth, glm::vec4(1.0f))},
+                        {Attachment::stored("color", color).clear(glm::vec4(0.0f)),
+                         Attachment::stored("normals", normals).clear(glm::vec4(0.0f)),
+                         Attachment::stored("border", border).clear(glm::vec4(0.0f)),
+                         Attachment::stored("depth", depth).clear_depth(1.0f)},
                         3);
   ctx.begin_subpass({0, 1, 2});
   ctx.draw_renderers(culling, {{toon::kMrt}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 
 namespace ontile::peer {
 

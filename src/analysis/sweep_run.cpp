@@ -6,9 +6,9 @@
 #include <ctime>
 
 #include "analysis/pareto_front.h"
-#include "pipelines/aov/aov_pass.h"
-#include "pipelines/lambert_pipeline.h"
-#include "pipelines/render_frame.h"
+#include "aov/aov_pass.h"
+#include "pipelines/lambert/lambert_pipeline.h"
+#include "pipelines/kit/render_frame.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -91,7 +91,7 @@ SweepResult run_sweep(const Scene& scene, const SweepConfig& config, const std::
   const LambertReferenceScene reference_scene =
       make_lambert_reference_scene(scene, camera, config.width_px, config.height_px);
   const ReferenceImage reference =
-      render_reference(reference_scene, config.width_px, config.height_px, config.reference_spp);
+      render_reference(reference_scene, config.width_px, config.height_px, config.reference_spp, config.steps);
   result.reference_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - reference_start).count();
 
@@ -106,7 +106,10 @@ SweepResult run_sweep(const Scene& scene, const SweepConfig& config, const std::
   const AovFrame float_normals = render_aov_frame(scene, aov_settings, {AovKind::Normal, AovKind::PrimitiveId});
 
   // Untimed: the error measures, from one frame of each setting (images are deterministic).
+  const int renders_total = static_cast<int>(settings.size()) * (1 + config.frames);
+  int renders_done = 0;
   for (const SweepSetting& setting : settings) {
+    if (config.steps) config.steps(++renders_done, renders_total, setting.name + " (error)");
     SweepRow row;
     row.setting = setting;
     row.frames = config.frames;
@@ -133,6 +136,7 @@ SweepResult run_sweep(const Scene& scene, const SweepConfig& config, const std::
   std::vector<std::vector<double>> times(settings.size()), cpu_times(settings.size());
   for (int f = 0; f < config.frames; ++f) {
     for (size_t i = 0; i < settings.size(); ++i) {
+      if (config.steps) config.steps(++renders_done, renders_total, settings[i].name + " (timed)");
       const RenderedSetting timed = render_setting(scene, camera, config, settings[i], settings[i].options);
       times[i].push_back(timed.wall_ms);
       cpu_times[i].push_back(timed.cpu_ms);

@@ -2,6 +2,7 @@
 // sweep_settings.h with the lambert pipeline, measuring time per frame, external bytes per
 // frame and the error against the reference; marks the Pareto-optimal settings.
 #pragma once
+#include "util/progress.h"
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -19,6 +20,7 @@ struct SweepConfig {
   int frames = 5;           // timed frames per setting, round robin (the median is reported)
   int threads = 0;          // rasterizer threads, 0 = all cores
   int reference_spp = 64;   // a perfect square (render_reference)
+  ProgressCallback steps;   // optional: hears of the reference rows, then of every rendered setting
 };
 
 struct SweepRow {

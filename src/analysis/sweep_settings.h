@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "pipelines/lambert_options.h"
+#include "pipelines/lambert/lambert_options.h"
 
 namespace ontile {
 

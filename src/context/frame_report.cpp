@@ -111,7 +111,7 @@ nlohmann::json frame_report_json(const FrameReport& frame) {
   nlohmann::json categories = nlohmann::json::object();
   for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
   nlohmann::json report = {{"format", "ontile-report"},
-                            {"version", 1},
+                            {"schema_version", 2},  // docs/report.schema.json
                             {"frame", {{"bytes_read", frame.bytes_read()},
                                        {"bytes_written", frame.bytes_written()},
                                        {"by_category", categories}}},

@@ -2,7 +2,7 @@
 // frame_executor.cpp).
 #include "context/render_context.h"
 
-#include "context/frame_executor.h"
+#include "context/detail/frame_executor.h"
 #include "util/error.h"
 
 namespace ontile {

@@ -5,7 +5,7 @@
 #include <cstdlib>
 
 #include "io/image_io.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 

@@ -1,8 +1,9 @@
 // One call that measures the rasterizer against the reference for a scene and camera: renders
 // lambert's image, the depth and primitive-id AOVs, and the ray-traced reference, then compares.
 #pragma once
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "reference/accuracy_metrics.h"
+#include "util/progress.h"
 
 namespace ontile {
 
@@ -13,6 +14,8 @@ struct AccuracyRun {
 
 // settings.pipeline must be "lambert" (the only pipeline the reference reproduces) and
 // settings.options empty; otherwise Error.
-AccuracyRun measure_accuracy(const Scene& scene, const RenderSettings& settings);
+// `progress` (optional) hears of each step: the raster frame, its AOVs, the reference rows, the comparison.
+AccuracyRun measure_accuracy(const Scene& scene, const RenderSettings& settings,
+                             const ProgressCallback& progress = {});
 
 }  // namespace ontile

@@ -4,6 +4,7 @@
 #include "reference/reference_renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -139,8 +140,8 @@ void check_samples_per_pixel(int samples_per_pixel) {
   }
 }
 
-ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, int height_px,
-                                int samples_per_pixel) {
+ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, int height_px, int samples_per_pixel,
+                                const ProgressCallback& progress) {
   if (width_px <= 0 || height_px <= 0 || width_px > kMaxTargetSizePx || height_px > kMaxTargetSizePx) {
     throw Error("reference: image size " + std::to_string(width_px) + "x" + std::to_string(height_px) +
                 " outside 1.." + std::to_string(kMaxTargetSizePx));
@@ -161,6 +162,7 @@ ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, 
   // Sample s of the k x k grid sits at ((i + 0.5) / k, (j + 0.5) / k); for odd k the middle
   // one is the pixel centre and gives the AOVs, for even k an extra centre ray does.
   const bool centre_in_grid = grid % 2 == 1;
+  std::atomic<int> rows_done{0};
   ontile::parallel_for(tbb::blocked_range<int>(0, quad_rows), [&](const tbb::blocked_range<int>& rows) {
     std::vector<RayCandidate> hits[kQuadLanes];
     LaneResult result[kQuadLanes];
@@ -196,6 +198,7 @@ ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, 
           image.color[size_t(y) * width_px + x] = glm::vec4(sum[lane] / double(samples_per_pixel));
         }
       }
+      if (progress) progress(++rows_done, quad_rows, "rows of quads ray-cast");
     }
   });
   return image;

@@ -2,6 +2,7 @@
 // (pixel centres; a stratified k x k grid per pixel for k^2 samples), same fragment functors,
 // plus depth, primitive-id and normal AOVs for comparing coverage with the rasterizer.
 #pragma once
+#include "util/progress.h"
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,8 +35,9 @@ void check_samples_per_pixel(int samples_per_pixel);
 // Renders ref's frame (width x height from make_lambert_reference_scene). samples_per_pixel must
 // be a perfect square 1, 4, 9, ... 256; others throw Error. Runs on oneTBB's threads; the result
 // does not depend on the thread count.
+// `progress` (optional) hears of every finished row of quads, from the worker threads.
 ReferenceImage render_reference(const LambertReferenceScene& ref, int width_px, int height_px,
-                                int samples_per_pixel);
+                                int samples_per_pixel, const ProgressCallback& progress = {});
 
 // EXR channel layout of a reference image: R, G, B, A, Z, primid, N.x, N.y, N.z.
 std::vector<std::string> reference_channel_names();

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 #include "util/error.h"
 
 namespace ontile {

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -69,6 +69,8 @@ std::vector<StudyVariant> deferred_study_variants(int lights) {
 std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, const std::vector<StudyVariant>& variants) {
   if (s.frames < 1) throw Error("study: frames must be at least 1");
   std::vector<StudyRow> rows;
+  int frames_done = 0;
+  const int frames_total = static_cast<int>(variants.size()) * s.frames;
   for (const StudyVariant& v : variants) {
     RenderSettings settings;
     settings.pipeline = v.pipeline;
@@ -83,6 +85,7 @@ std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, cons
     row.variant = v;
     std::vector<double> times;
     for (int f = 0; f < s.frames; ++f) {
+      if (s.progress) s.progress(++frames_done, frames_total, v.label);
       const RenderedFrame frame = render_frame(scene, settings);
       const FrameReport& r = frame.outputs.report;
       times.push_back(r.total_ms);

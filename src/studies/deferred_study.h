@@ -4,6 +4,7 @@
 // tile vs separately) and reports bytes per frame by category beside the published Mali-G76
 // measurements.
 #pragma once
+#include "util/progress.h"
 #include <map>
 #include <string>
 #include <utility>
@@ -27,6 +28,7 @@ struct StudySettings {
   int lights = 48;  // the sample's Sponza lights: 8 x 2 x 3 point lights
   int frames = 1;   // frame time is the median over this many frames
   int parameter_cache_kib = 0;  // an L2 model for parameter-buffer reads (0: none)
+  ProgressCallback progress;    // optional: hears of every rendered frame
 };
 
 struct StudyRow {

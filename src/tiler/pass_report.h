@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "raster/pixel_format.h"
-#include "tiler/texture_cache.h"
+#include "tiler/detail/texture_cache.h"
 
 namespace ontile {
 

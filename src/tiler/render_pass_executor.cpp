@@ -8,9 +8,9 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include "raster/sample_pattern.h"
-#include "tiler/parameter_buffer.h"
-#include "tiler/tile_executor.h"
-#include "tiler/trace_buffers.h"
+#include "tiler/detail/parameter_buffer.h"
+#include "tiler/detail/tile_executor.h"
+#include "tiler/detail/trace_buffers.h"
 #include "util/error.h"
 #include "util/parallel_for.h"
 

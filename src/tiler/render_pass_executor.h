@@ -2,10 +2,10 @@
 // the tile-memory colour budget, bin all geometry, then run every tile in parallel (oneTBB)
 // and count the external memory traffic.
 #pragma once
-#include "tiler/imr_model.h"
-#include "tiler/parameter_cache.h"
+#include "tiler/detail/imr_model.h"
+#include "tiler/detail/parameter_cache.h"
 #include "tiler/pass_report.h"
-#include "tiler/texture_cache.h"
+#include "tiler/detail/texture_cache.h"
 #include "tiler/render_pass.h"
 
 namespace ontile {

@@ -7,7 +7,7 @@
 
 #include "context/render_context.h"
 #include "context/scene_renderers.h"
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
 

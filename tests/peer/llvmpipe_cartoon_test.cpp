@@ -13,7 +13,7 @@
 #include "peer/cartoon_reference.h"
 #include "peer/peer_child.h"
 #include "peer/peer_compare.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gen/scene_generator.h"
 #include "scene/gltf_loader.h"
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "pipelines/cartoon/toon_settings.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 

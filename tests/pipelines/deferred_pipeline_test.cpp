@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 

@@ -8,9 +8,9 @@
 #include <numbers>
 
 #include "analysis/sweep_metrics.h"
-#include "pipelines/aov/aov_pass.h"
-#include "pipelines/lambert_pipeline.h"
-#include "pipelines/render_frame.h"
+#include "aov/aov_pass.h"
+#include "pipelines/lambert/lambert_pipeline.h"
+#include "pipelines/kit/render_frame.h"
 #include "reference/reference_shading.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "context/render_graph.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 
 namespace ontile {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "context/frame_report.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "raster/cell_raster.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"

@@ -2,7 +2,7 @@
 // diagonal, the orthographic depth of the plane, unit normals, clear values, and its errors.
 #include <gtest/gtest.h>
 
-#include "pipelines/aov/aov_pass.h"
+#include "aov/aov_pass.h"
 #include "reference/reference_test_scenes.h"
 #include "util/error.h"
 

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "pipelines/aov/aov_pass.h"
+#include "aov/aov_pass.h"
 #include "reference/accuracy_run.h"
 #include "reference/reference_test_scenes.h"
 #include "scene/gltf_loader.h"

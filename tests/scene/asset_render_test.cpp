@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 
 namespace ontile {

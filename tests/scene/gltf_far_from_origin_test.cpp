@@ -13,7 +13,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gltf_test_files.h"
-#include "pipelines/aov/aov_pass.h"
+#include "aov/aov_pass.h"
 #include "reference/reference_renderer.h"
 #include "reference/reference_shading.h"
 #include "scene/gltf_loader.h"

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 #include "shaders_cpp/mesh_vertex_shader.h"
 #include "support/raster_harness.h"
 

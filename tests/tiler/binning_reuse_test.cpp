@@ -12,7 +12,7 @@
 
 #include "raster/clip.h"
 #include "support/raster_harness.h"
-#include "tiler/parameter_buffer.h"
+#include "tiler/detail/parameter_buffer.h"
 
 namespace ontile {
 namespace {

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "context/frame_report.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gltf_loader.h"
 #include "support/raster_harness.h"
 

@@ -5,7 +5,7 @@
 
 #include "context/frame_report.h"
 #include "support/raster_harness.h"
-#include "tiler/imr_model.h"
+#include "tiler/detail/imr_model.h"
 #include "util/error.h"
 
 namespace ontile::test {

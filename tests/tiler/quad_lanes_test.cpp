@@ -5,7 +5,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "tiler/quad_batcher.h"
+#include "tiler/detail/quad_batcher.h"
 
 namespace ontile {
 namespace {

@@ -13,12 +13,12 @@
 #include <unistd.h>
 #include <vector>
 
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "scene/gen/scene_generator.h"
 #include "scene/gltf_loader.h"
 #include "support/generated_scene.h"
 #include "tiler/reference_lru.h"
-#include "tiler/texture_replay_observer.h"
+#include "tiler/detail/texture_replay_observer.h"
 
 namespace ontile {
 namespace {

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/cell_raster.h"
-#include "tiler/vertex_kernels.h"
+#include "tiler/detail/vertex_kernels.h"
 
 namespace ontile {
 namespace {

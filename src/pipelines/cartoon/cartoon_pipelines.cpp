@@ -1,9 +1,8 @@
 // The cartoon pipelines (see cartoon_pipelines.h).
 #include "pipelines/cartoon/cartoon_pipelines.h"
 
-#include "context/render_graph.h"
-#include "context/scene_renderers.h"
 #include "pipelines/cartoon/toon_shaders.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -11,8 +10,8 @@ namespace {
 
 constexpr glm::vec4 kNoClear(0.0f);
 
-NormalEncoding normal_format_option(const FrameInputs& in, PixelFormat& format) {
-  const std::string normals = in.options.take("normals", "rgb10a2");
+NormalEncoding normal_format_option(const PipelineOptions& options, PixelFormat& format) {
+  const std::string normals = options.take("normals", "rgb10a2");
   if (normals == "rgb10a2") {
     format = PixelFormat::RGB10A2_UNORM;
     return NormalEncoding::Unorm;
@@ -24,24 +23,15 @@ NormalEncoding normal_format_option(const FrameInputs& in, PixelFormat& format) 
   throw Error("pipeline option normals='" + normals + "': expected rgb10a2 or rgba16f");
 }
 
-AttachmentDesc target(const char* name, Surface* s, LoadAction load, StoreAction store,
-                      glm::vec4 clear = kNoClear) {
-  return {name, s ? s->format() : PixelFormat::D32_FLOAT, load, store, clear, s, nullptr};
-}
-
-AttachmentDesc transient_depth() {
-  return {"depth", PixelFormat::D32_FLOAT, LoadAction::Clear, StoreAction::DontCare,
-          glm::vec4(1.0f), nullptr, nullptr};
-}
-
 // cartoon-multipass as a render graph: the scene drawn once per buffer, each pass with its
 // own (transient) depth test, then the Sobel edges sample every buffer's neighbours.
-FrameOutputs render_multipass(RenderContext& ctx, const FrameInputs& in, const ToonShaderLibrary& library,
-                              const CullingResults& culling, const CameraMatrices& camera, PixelFormat normal_format) {
+FrameOutputs render_multipass(const FrameKit& kit, const ToonShaderLibrary& library, PixelFormat normal_format) {
   RenderGraph graph;
   auto target = [&](const char* name, PixelFormat format, glm::vec4 clear = kNoClear, bool memoryless = false) {
-    return graph.create({name, format, in.width_px, in.height_px, 1, clear, {}, memoryless});
+    return graph.create({name, format, kit.width_px(), kit.height_px(), 1, clear, {}, memoryless});
   };
+  const CullingResults& culling = kit.culling();
+  const CameraMatrices& camera = kit.matrices();
   const GraphResource color = target("color", PixelFormat::RGBA8_SRGB);
   const GraphResource normals = target("normals", normal_format);
   const GraphResource border = target("border", PixelFormat::RGBA8_UNORM);
@@ -73,43 +63,36 @@ FrameOutputs render_multipass(RenderContext& ctx, const FrameInputs& in, const T
         r.set_global_texture("_BorderTex", r.texture(border));
         r.blit_from(color, &library.edges_material(), toon::kEdgesPass);
       });
-  graph.mark_output(final_image);
-  graph.execute(ctx);
-  FrameOutputs out;
-  out.report = ctx.submit();
-  out.color = graph.surface(final_image);
-  return out;
+  return kit.submit(graph, final_image);
 }
 
 }  // namespace
 
 FrameOutputs CartoonPipeline::render(RenderContext& ctx, const FrameInputs& in) {
   PixelFormat normal_format;
-  const NormalEncoding encoding = normal_format_option(in, normal_format);
-  in.options.reject_unknown(name());
-  const Scene& scene = *in.scene;
-  const CameraMatrices camera = camera_matrices(in.camera, double(in.width_px) / in.height_px);
+  const NormalEncoding encoding =
+      read_options(in, name(), [&](const PipelineOptions& o) { return normal_format_option(o, normal_format); });
   const ToonShaderLibrary library(encoding);
-  const SceneRenderers sr = make_scene_renderers(
-      scene, [&](const Material& m) { return library.make_material(m, ToonLook::PerMaterial); });
-  const CullingResults culling = ctx.cull(sr.renderers, camera);
-  set_toon_globals(ctx, scene, in.camera, camera);
+  FrameKit kit(ctx, in);
+  const CullingResults& culling =
+      kit.cull([&](const Material& m) { return library.make_material(m, ToonLook::PerMaterial); });
+  const CameraMatrices& camera = kit.matrices();
+  set_toon_globals(ctx, kit.scene(), in.camera, camera);
 
-  if (multipass_) return render_multipass(ctx, in, library, culling, camera, normal_format);
-  const int w = in.width_px, h = in.height_px;
-  Surface* color = ctx.create_surface("color", PixelFormat::RGBA8_SRGB, w, h);
-  Surface* normals = ctx.create_surface("normals", normal_format, w, h);
-  Surface* border = ctx.create_surface("border", PixelFormat::RGBA8_UNORM, w, h);
-  Surface* depth = ctx.create_surface("depth", PixelFormat::D32_FLOAT, w, h);
-  Surface* final_image = ctx.create_surface("final", PixelFormat::RGBA8_SRGB, w, h);
+  if (multipass_) return render_multipass(kit, library, normal_format);
+  Surface* color = kit.create_target("color", PixelFormat::RGBA8_SRGB);
+  Surface* normals = kit.create_target("normals", normal_format);
+  Surface* border = kit.create_target("border", PixelFormat::RGBA8_UNORM);
+  Surface* depth = kit.create_target("depth", PixelFormat::D32_FLOAT);
+  Surface* final_image = kit.create_target("final", PixelFormat::RGBA8_SRGB);
 
   // The paper's design: every G-buffer target written by one MRT pass; the sky writes colour
   // only (the other outputs stay zero, as their clears).
-  ctx.begin_render_pass("toon MRT", w, h, 1,
-                        {target("color", color, LoadAction::Clear, StoreAction::Store),
-                         target("normals", normals, LoadAction::Clear, StoreAction::Store),
-                         target("border", border, LoadAction::Clear, StoreAction::Store),
-                         target("depth", depth, LoadAction::Clear, StoreAction::Store, glm::vec4(1.0f))},
+  ctx.begin_render_pass("toon MRT", in.width_px, in.height_px, 1,
+                        {Attachment::stored("color", color).clear(kNoClear),
+                         Attachment::stored("normals", normals).clear(kNoClear),
+                         Attachment::stored("border", border).clear(kNoClear),
+                         Attachment::stored("depth", depth).clear_depth(1.0f)},
                         3);
   ctx.begin_subpass({0, 1, 2});
   ctx.draw_renderers(culling, {{toon::kMrt}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
@@ -125,26 +108,23 @@ FrameOutputs CartoonPipeline::render(RenderContext& ctx, const FrameInputs& in) 
   cmd.blit(RenderTargetRef::of(color), RenderTargetRef::of(final_image), &library.edges_material(),
            toon::kEdgesPass);
   ctx.execute_command_buffer(cmd);
-
-  FrameOutputs out;
-  out.report = ctx.submit();
-  out.color = final_image;
-  return out;
+  return kit.submit(final_image);
 }
 
 FrameOutputs CartoonHullPipeline::render(RenderContext& ctx, const FrameInputs& in) {
   in.options.reject_unknown(name());
-  const Scene& scene = *in.scene;
-  const CameraMatrices camera = camera_matrices(in.camera, double(in.width_px) / in.height_px);
   const ToonShaderLibrary library(NormalEncoding::Unorm);
-  const SceneRenderers sr = make_scene_renderers(
-      scene, [&](const Material& m) { return library.make_material(m, ToonLook::Environment); });
-  const CullingResults culling = ctx.cull(sr.renderers, camera);
-  set_toon_globals(ctx, scene, in.camera, camera);
+  FrameKit kit(ctx, in);
+  const CullingResults& culling =
+      kit.cull([&](const Material& m) { return library.make_material(m, ToonLook::Environment); });
+  const CameraMatrices& camera = kit.matrices();
+  set_toon_globals(ctx, kit.scene(), in.camera, camera);
 
-  Surface* color = ctx.create_surface("color", PixelFormat::RGBA8_SRGB, in.width_px, in.height_px);
+  Surface* color = kit.create_target("color", PixelFormat::RGBA8_SRGB);
   ctx.begin_render_pass("toon forward + hull outlines", in.width_px, in.height_px, 1,
-                        {target("color", color, LoadAction::Clear, StoreAction::Store), transient_depth()}, 1);
+                        {Attachment::stored("color", color).clear(kNoClear),
+                         Attachment::transient("depth", PixelFormat::D32_FLOAT).clear_depth(1.0f)},
+                        1);
   ctx.begin_subpass({0});
   ctx.draw_renderers(culling, {{toon::kColor}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
   ctx.draw_skybox(camera);
@@ -153,11 +133,14 @@ FrameOutputs CartoonHullPipeline::render(RenderContext& ctx, const FrameInputs& 
   ctx.draw_renderers(culling, {{toon::kOutline}, SortingCriteria::CommonOpaque}, {RenderQueueRange::all()});
   ctx.end_subpass();
   ctx.end_render_pass();
-
-  FrameOutputs out;
-  out.report = ctx.submit();
-  out.color = color;
-  return out;
+  return kit.submit(color);
 }
+
+namespace {
+const PipelineRegistration kCartoon("cartoon", [] { return std::make_unique<CartoonPipeline>(false); });
+const PipelineRegistration kCartoonMultipass("cartoon-multipass",
+                                             [] { return std::make_unique<CartoonPipeline>(true); });
+const PipelineRegistration kCartoonHull("cartoon-hull", [] { return std::make_unique<CartoonHullPipeline>(); });
+}  // namespace
 
 }  // namespace ontile

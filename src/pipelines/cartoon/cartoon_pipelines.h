@@ -6,7 +6,7 @@
 //  cartoon-hull       toon environment shading plus inverted-hull outlines, no screen pass.
 // Options (--set): normals=rgb10a2|rgba16f (cartoon, cartoon-multipass).
 #pragma once
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline.h"
 
 namespace ontile {
 

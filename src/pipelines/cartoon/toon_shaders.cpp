@@ -5,7 +5,7 @@
 #include <mutex>
 
 #include "pipelines/cartoon/toon_settings.h"
-#include "pipelines/lit_shader.h"
+#include "pipelines/lit/lit_shader.h"
 #include "shaders_cpp/full_screen.h"
 #include "shaders_cpp/lambert_shader.h"
 #include "shaders_cpp/toon/cel_shader.h"

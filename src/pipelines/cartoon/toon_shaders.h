@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "context/render_context.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "shaders_cpp/toon/cube_map.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 

@@ -1,7 +1,7 @@
 // Parsing of the forward and deferred pipelines' options (see deferred_pipelines.h), with
 // errors that name the option and its valid values.
 #pragma once
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline.h"
 #include "shaders_cpp/deferred/gbuffer_layout.h"
 
 namespace ontile {

@@ -1,42 +1,36 @@
 // The deferred pipelines and the forward baseline (see deferred_pipelines.h).
 #include "pipelines/deferred/deferred_pipelines.h"
 
-#include "context/render_graph.h"
-#include "context/scene_renderers.h"
 #include "pipelines/deferred/deferred_options.h"
 #include "pipelines/deferred/deferred_shaders.h"
 #include "pipelines/deferred/scene_lighting_setup.h"
-#include "pipelines/lit_shader.h"
+#include "pipelines/kit/pipeline_api.h"
+#include "pipelines/lit/lit_shader.h"
 
 namespace ontile {
 namespace {
 
 
-// What every variant prepares before recording: lights, shaders, renderers and culling. Built
-// in place (the shader library points to the lighting), alive until submit() returns.
+// What every variant prepares before recording: the kit's camera and culling, lights and
+// shaders. Built in place (the shader library points to the lighting), alive until submit().
 struct FrameSetup {
   FrameSetup(const FrameInputs& in, const DeferredOptions& options, RenderContext& ctx)
-      : camera(camera_matrices(in.camera, double(in.width_px) / in.height_px)),
-        lighting(make_scene_lighting(*in.scene, options.generated_lights, camera, in.width_px, in.height_px)),
-        library(options.layout, lighting, camera, in.width_px, in.height_px),
-        renderers(make_scene_renderers(*in.scene, [&](const Material& m) { return library.make_material(m); })),
-        culling(ctx.cull(renderers.renderers, camera)) {
+      : kit(ctx, in),
+        lighting(make_scene_lighting(*in.scene, options.generated_lights, kit.matrices(), in.width_px, in.height_px)),
+        library(options.layout, lighting, kit.matrices(), in.width_px, in.height_px),
+        culling(kit.cull([&](const Material& m) { return library.make_material(m); })) {
     for (uint32_t i : culling.visible) {
-      if (renderers.renderers[i].material->render_queue > RenderQueueRange::opaque().upper) has_transparent = true;
+      if (kit.renderers().renderers[i].material->render_queue > RenderQueueRange::opaque().upper) {
+        has_transparent = true;
+      }
     }
   }
-  CameraMatrices camera;
+  FrameKit kit;
   SceneLighting lighting;
   DeferredShaderLibrary library;
-  SceneRenderers renderers;
-  CullingResults culling;
+  const CullingResults& culling;
   bool has_transparent = false;
 };
-
-AttachmentDesc attachment(const std::string& name, PixelFormat format, Surface* surface, LoadAction load,
-                          StoreAction store, glm::vec4 clear = glm::vec4(0.0f)) {
-  return {name, format, load, store, clear, surface, nullptr};
-}
 
 void draw_opaque(RenderContext& ctx, const FrameSetup& s, const char* light_mode) {
   ctx.draw_renderers(s.culling, {{light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::opaque()});
@@ -50,8 +44,7 @@ void draw_transparent(RenderContext& ctx, const FrameSetup& s) {
 // deferred-classic as a render graph written pass by pass, the way the two-pass renderer is
 // (docs/render-graph.md): the G-buffer pass stores every target and depth, lighting reads them
 // at its own pixel (textures unless --render-graph merge puts both in one render pass).
-FrameOutputs render_classic(RenderContext& ctx, const FrameInputs& in, const DeferredOptions& options,
-                            const FrameSetup& setup) {
+FrameOutputs render_classic(const FrameInputs& in, const DeferredOptions& options, const FrameSetup& setup) {
   const GBufferLayout& layout = options.layout;
   const int w = in.width_px, h = in.height_px;
   const std::vector<PixelFormat> formats = layout.target_formats();
@@ -108,56 +101,48 @@ FrameOutputs render_classic(RenderContext& ctx, const FrameInputs& in, const Def
           r.draw_full_screen(&setup.library.tonemap_material(from_textures), deferred::kTonemapPass);
         });
   }
-  const GraphResource shown = options.tonemap ? final_image : light;
-  graph.mark_output(shown);
-  graph.execute(ctx);
-  FrameOutputs out;
-  out.report = ctx.submit();
-  out.color = graph.surface(shown);
-  return out;
+  return setup.kit.submit(graph, options.tonemap ? final_image : light);
 }
 
 }  // namespace
 
 FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in) {
-  const DeferredOptions options =
-      parse_deferred_options(in.options, subpasses_ ? DeferredVariant::Subpass : DeferredVariant::Classic);
-  in.options.reject_unknown(name());
+  const DeferredOptions options = read_options(in, name(), [&](const PipelineOptions& o) {
+    return parse_deferred_options(o, subpasses_ ? DeferredVariant::Subpass : DeferredVariant::Classic);
+  });
   const FrameSetup setup(in, options, ctx);
-  if (!subpasses_) return render_classic(ctx, in, options, setup);
+  if (!subpasses_) return render_classic(in, options, setup);
   const GBufferLayout& layout = options.layout;
   const int w = in.width_px, h = in.height_px;
   const std::vector<PixelFormat> formats = layout.target_formats();
   const std::vector<std::string> names = layout.target_names();
   const int targets = layout.target_count();
-  Surface* final_image = options.tonemap ? ctx.create_surface("final", PixelFormat::RGBA8_SRGB, w, h) : nullptr;
-  FrameOutputs out;
+  Surface* final_image = options.tonemap ? setup.kit.create_target("final", PixelFormat::RGBA8_SRGB) : nullptr;
 
   // One render pass; G-buffer and depth live only in tile memory. transient=off backs them by
   // memory as Vulkan-Samples' "transient attachments off" does (store op still DONT_CARE, so
   // nothing more is written); gbuffer_store=store also writes them back, the cost the sample's
   // tutorial warns of.
-  Surface* light = options.tonemap ? nullptr : ctx.create_surface("light", layout.light_format, w, h);
-  auto on_tile = [&](const std::string& name, PixelFormat format) -> Surface* {
-    return options.transient ? nullptr : ctx.create_surface(name, format, w, h);
+  Surface* light = options.tonemap ? nullptr : setup.kit.create_target("light", layout.light_format);
+  auto on_tile = [&](const std::string& name, PixelFormat format) {
+    const Attachment a = Attachment::transient(name, format)
+                             .backed_by(options.transient ? nullptr : setup.kit.create_target(name, format))
+                             .clear(glm::vec4(0.0f));
+    return options.store_gbuffer ? a.store() : a;
   };
-  const StoreAction on_tile_store = options.store_gbuffer ? StoreAction::Store : StoreAction::DontCare;
   std::vector<AttachmentDesc> a;
-  a.push_back(attachment("light", layout.light_format, light, LoadAction::Clear,
-                         options.tonemap ? StoreAction::DontCare : StoreAction::Store, lit::kBackgroundColor));
-  a.push_back(attachment("depth", layout.depth_format, on_tile("depth", layout.depth_format), LoadAction::Clear,
-                         on_tile_store, glm::vec4(1.0f)));
+  a.push_back(options.tonemap ? Attachment::transient("light", layout.light_format).clear(lit::kBackgroundColor)
+                              : Attachment::stored("light", light).clear(lit::kBackgroundColor));
+  a.push_back(on_tile("depth", layout.depth_format).clear_depth(1.0f));
   std::vector<int> gbuffer_outputs, lighting_inputs{1};
   if (layout.light_in_gbuffer) gbuffer_outputs.push_back(0);
   for (int k = 0; k < targets; ++k) {
     gbuffer_outputs.push_back(static_cast<int>(a.size()));
     lighting_inputs.push_back(static_cast<int>(a.size()));
-    a.push_back(attachment(names[k], formats[k], on_tile(names[k], formats[k]), LoadAction::Clear, on_tile_store));
+    a.push_back(on_tile(names[k], formats[k]));
   }
   const int final_index = static_cast<int>(a.size());
-  if (options.tonemap) {
-    a.push_back(attachment("final", PixelFormat::RGBA8_SRGB, final_image, LoadAction::DontCare, StoreAction::Store));
-  }
+  if (options.tonemap) a.push_back(Attachment::stored("final", final_image));
   ctx.begin_render_pass("deferred", w, h, 1, a, 1);
   ctx.begin_subpass(gbuffer_outputs);
   draw_opaque(ctx, setup, deferred::kGBuffer);
@@ -176,37 +161,32 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
     ctx.end_subpass();
   }
   ctx.end_render_pass();
-  out.report = ctx.submit();
-  out.color = options.tonemap ? final_image : light;
-  return out;
+  return setup.kit.submit(options.tonemap ? final_image : light);
 }
 
 FrameOutputs ForwardPipeline::render(RenderContext& ctx, const FrameInputs& in) {
-  const DeferredOptions options = parse_deferred_options(in.options, DeferredVariant::Forward);
-  in.options.reject_unknown(name());
+  const DeferredOptions options = read_options(
+      in, name(), [](const PipelineOptions& o) { return parse_deferred_options(o, DeferredVariant::Forward); });
   const FrameSetup setup(in, options, ctx);
   const int w = in.width_px, h = in.height_px, samples = options.msaa_samples;
-  Surface* final_image = ctx.create_surface("final", PixelFormat::RGBA8_SRGB, w, h);
+  Surface* final_image = setup.kit.create_target("final", PixelFormat::RGBA8_SRGB);
   // The attachment holding the displayable colour: single-sampled, resolved on tile, or stored
-  // multisampled for a separate resolve pass.
-  Surface* stored_msaa = options.separate_resolve
-                             ? ctx.create_surface("color msaa", PixelFormat::RGBA8_SRGB, w, h, samples)
-                             : nullptr;
-  auto display_attachment = [&](LoadAction load, glm::vec4 clear) {
-    if (samples == 1) return attachment("color", PixelFormat::RGBA8_SRGB, final_image, load, StoreAction::Store, clear);
-    if (stored_msaa) return attachment("color msaa", PixelFormat::RGBA8_SRGB, stored_msaa, load, StoreAction::Store, clear);
-    AttachmentDesc resolving = attachment("color msaa", PixelFormat::RGBA8_SRGB, nullptr, load, StoreAction::Resolve, clear);
-    resolving.resolve_surface = final_image;
-    return resolving;
+  // multisampled for a separate resolve pass; cleared, or undefined where tonemapping writes it whole.
+  Surface* stored_msaa =
+      options.separate_resolve ? setup.kit.create_target("color msaa", PixelFormat::RGBA8_SRGB, samples) : nullptr;
+  auto display_attachment = [&]() {
+    if (samples == 1) return Attachment::stored("color", final_image);
+    if (stored_msaa) return Attachment::stored("color msaa", stored_msaa);
+    return Attachment::transient("color msaa", PixelFormat::RGBA8_SRGB).resolve_into(final_image);
   };
   std::vector<AttachmentDesc> a;
   if (options.tonemap) {
-    a.push_back(attachment("light", options.layout.light_format, nullptr, LoadAction::Clear, StoreAction::DontCare, lit::kBackgroundColor));
+    a.push_back(Attachment::transient("light", options.layout.light_format).clear(lit::kBackgroundColor));
   } else {
-    a.push_back(display_attachment(LoadAction::Clear, lit::kBackgroundColor));
+    a.push_back(display_attachment().clear(lit::kBackgroundColor));
   }
-  a.push_back(attachment("depth", PixelFormat::D32_FLOAT, nullptr, LoadAction::Clear, StoreAction::DontCare, glm::vec4(1.0f)));
-  if (options.tonemap) a.push_back(display_attachment(LoadAction::DontCare, glm::vec4(0.0f)));
+  a.push_back(Attachment::transient("depth", PixelFormat::D32_FLOAT).clear_depth(1.0f));
+  if (options.tonemap) a.push_back(display_attachment());
   ctx.begin_render_pass("forward", w, h, samples, a, 1);
   ctx.begin_subpass({0});
   draw_opaque(ctx, setup, deferred::kForwardLit);
@@ -221,17 +201,19 @@ FrameOutputs ForwardPipeline::render(RenderContext& ctx, const FrameInputs& in) 
   if (stored_msaa) {
     // vkCmdResolveImage on a tiler: a fragment pass that reads every sample back and writes the
     // averaged pixel.
-    AttachmentDesc resolve = attachment("color msaa", PixelFormat::RGBA8_SRGB, stored_msaa, LoadAction::Load, StoreAction::Resolve);
-    resolve.resolve_surface = final_image;
-    ctx.begin_render_pass("msaa resolve", w, h, samples, {resolve}, -1);
+    ctx.begin_render_pass("msaa resolve", w, h, samples,
+                          {Attachment::stored("color msaa", stored_msaa).load().resolve_into(final_image)}, -1);
     ctx.begin_subpass({0});
     ctx.end_subpass();
     ctx.end_render_pass();
   }
-  FrameOutputs out;
-  out.report = ctx.submit();
-  out.color = final_image;
-  return out;
+  return setup.kit.submit(final_image);
 }
+
+namespace {
+const PipelineRegistration kDeferredClassic("deferred-classic", [] { return std::make_unique<DeferredPipeline>(false); });
+const PipelineRegistration kDeferredSubpass("deferred-subpass", [] { return std::make_unique<DeferredPipeline>(true); });
+const PipelineRegistration kForward("forward", [] { return std::make_unique<ForwardPipeline>(); });
+}  // namespace
 
 }  // namespace ontile

@@ -10,7 +10,7 @@
 // vulkan-samples-large, lights=N (generated point lights), tonemap=auto|on|off; subpass only:
 // transient=on|off, gbuffer_store=dont-care|store (store needs transient=off); forward only: msaa=1|2|4|8, resolve=on-tile|separate.
 #pragma once
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline.h"
 
 namespace ontile {
 

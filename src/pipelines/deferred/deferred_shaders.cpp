@@ -1,7 +1,7 @@
 // The Deferred Lit shader, its materials and the full-screen steps (see deferred_shaders.h).
 #include "pipelines/deferred/deferred_shaders.h"
 
-#include "pipelines/gltf_surface_state.h"
+#include "pipelines/lit/gltf_surface_state.h"
 #include "shaders_cpp/deferred/deferred_lighting_shader.h"
 #include "shaders_cpp/deferred/gbuffer_shader.h"
 #include "shaders_cpp/full_screen.h"

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "context/render_context.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "shaders_cpp/deferred/gbuffer_layout.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
 

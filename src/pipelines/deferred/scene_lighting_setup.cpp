@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "context/culling.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "pipelines/universal/universal_lights.h"
 
 namespace ontile {

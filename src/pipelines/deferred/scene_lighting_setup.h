@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 
-#include "context/camera_matrices.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "scene/scene.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
 

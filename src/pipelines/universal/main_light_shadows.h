@@ -4,7 +4,7 @@
 #pragma once
 #include <glm/glm.hpp>
 
-#include "context/camera_matrices.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "raster/texture.h"
 #include "scene/scene.h"
 

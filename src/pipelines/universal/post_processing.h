@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "context/render_context.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "shaders_cpp/tone_curves.h"
 
 namespace ontile {

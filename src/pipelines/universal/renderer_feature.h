@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "context/render_context.h"
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline_api.h"
+#include "pipelines/kit/pipeline.h"
 
 namespace ontile {
 

@@ -7,8 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "context/command_buffer.h"
-#include "context/property_block.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "scene/scene.h"
 #include "shaders_cpp/lighting/punctual_light.h"
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "pipelines/gltf_surface_state.h"
+#include "pipelines/lit/gltf_surface_state.h"
 #include "pipelines/universal/universal_lit_functors.h"
 
 namespace ontile {

@@ -4,7 +4,7 @@
 #pragma once
 #include <memory>
 
-#include "context/render_context.h"
+#include "pipelines/kit/pipeline_api.h"
 
 namespace ontile {
 

@@ -12,8 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "context/render_graph.h"
-#include "context/scene_renderers.h"
+#include "pipelines/kit/pipeline_api.h"
 #include "pipelines/universal/screen_space_outline_feature.h"
 #include "pipelines/universal/universal_lit_shader.h"
 #include "util/error.h"
@@ -69,18 +68,15 @@ double number_option(const PipelineOptions& options, const std::string& key, dou
 class FrameRecorder {
  public:
   FrameRecorder(RenderContext& ctx, const FrameInputs& in, const UniversalSettings& settings)
-      : ctx_(ctx), in_(in), settings_(settings) {}
+      : ctx_(ctx), in_(in), settings_(settings), kit_(ctx, in) {}
 
   FrameOutputs record(const std::vector<std::unique_ptr<RendererFeature>>& features,
                       const std::vector<bool>& enabled) {
-    const Scene& scene = *in_.scene;
+    const Scene& scene = kit_.scene();
     const int w = in_.width_px, h = in_.height_px;
-    camera_ = camera_matrices(in_.camera, double(w) / h);
     lit_ = make_universal_lit_shader();
     blit_shader_ = make_universal_blit_shader();
-    renderers_ = make_scene_renderers(
-        scene, [&](const Material& m) { return make_universal_lit_material(*lit_, m); });
-    culling_ = ctx_.cull(renderers_.renderers, camera_);
+    kit_.cull([&](const Material& m) { return make_universal_lit_material(*lit_, m); });
 
     // Features in run order, merged with the pipeline's steps by key (features even, steps odd).
     std::vector<std::pair<int, int>> work;  // (key, feature index or -1 - step key)
@@ -114,8 +110,8 @@ class FrameRecorder {
     }
     final_ = graph_.create({"final", PixelFormat::RGBA8_SRGB, w, h});
     data_.inputs = &in_;
-    data_.camera = camera_;
-    data_.culling = &culling_;
+    data_.camera = kit_.matrices();
+    data_.culling = &kit_.culling();
     data_.width_px = w;
     data_.height_px = h;
 
@@ -135,10 +131,7 @@ class FrameRecorder {
     graph_.mark_output(final_);
     graph_.execute(ctx_);
     if (data_.camera_color_copy.valid()) ctx_.release_temporary_rt(kColorCopyId);
-    FrameOutputs out;
-    out.report = ctx_.submit();
-    out.color = graph_.surface(final_);
-    return out;
+    return kit_.submit(graph_.surface(final_));
   }
 
  private:
@@ -168,14 +161,14 @@ class FrameRecorder {
       case kPrepassKey: return prepass();
       case kOpaquesKey:
         return forward_step([this](GraphPassRecorder& r) {
-          r.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonOpaque},
+          r.draw_renderers(kit_.culling(), {{universal_light_mode::kForward}, SortingCriteria::CommonOpaque},
                            {RenderQueueRange::opaque()});
         });
       case kSkyboxKey:
-        return forward_step([this](GraphPassRecorder& r) { r.draw_skybox(camera_); });
+        return forward_step([this](GraphPassRecorder& r) { r.draw_skybox(kit_.matrices()); });
       case kTransparentsKey:
         return forward_step([this](GraphPassRecorder& r) {
-          r.draw_renderers(culling_, {{universal_light_mode::kForward}, SortingCriteria::CommonTransparent},
+          r.draw_renderers(kit_.culling(), {{universal_light_mode::kForward}, SortingCriteria::CommonTransparent},
                            {RenderQueueRange::transparent()});
         });
       case kEndForwardKey: return end_forward();
@@ -186,14 +179,14 @@ class FrameRecorder {
 
   void shadows() {
     Bounds receivers;
-    for (uint32_t i : culling_.visible) receivers.extend(renderers_.renderers[i].world_bounds);
+    for (uint32_t i : kit_.culling().visible) receivers.extend(kit_.renderers().renderers[i].world_bounds);
     if (!settings_.main_light_shadows || receivers.empty()) return;
     const MainLightShadowSettings& s = settings_.shadows;
     shadow_setup_ =
         fit_main_light_shadow(lights_.main.to_light, receivers, in_.scene->world_bounds, s.map_size_px);
     shadow_map_ = graph_.create({"shadowmap", PixelFormat::D32_FLOAT, s.map_size_px, s.map_size_px, 1,
                                  glm::vec4(1.0f), "_MainLightShadowmapTexture"});
-    shadow_casters_ = ctx_.cull(renderers_.renderers, shadow_setup_.light_camera);
+    shadow_casters_ = ctx_.cull(kit_.renderers().renderers, shadow_setup_.light_camera);
     graph_.add_pass("MainLightShadow")
         .write_depth(shadow_map_, LoadAction::Clear, StoreAction::Store)
         .record([this](GraphPassRecorder& r) {
@@ -219,7 +212,7 @@ class FrameRecorder {
     if (!prepass_) return;
     auto draw = [this](const char* light_mode) {
       return [this, light_mode](GraphPassRecorder& r) {
-        r.draw_renderers(culling_, {{light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::opaque()});
+        r.draw_renderers(kit_.culling(), {{light_mode}, SortingCriteria::CommonOpaque}, {RenderQueueRange::opaque()});
       };
     };
     if (normals_prepass_) {
@@ -285,12 +278,11 @@ class FrameRecorder {
   RenderContext& ctx_;
   const FrameInputs& in_;
   const UniversalSettings& settings_;
-  CameraMatrices camera_;
   UniversalLights lights_;
   std::unique_ptr<Shader> lit_, blit_shader_;
   std::unique_ptr<RenderMaterial> copy_material_, tonemap_material_;
-  SceneRenderers renderers_;
-  CullingResults culling_, shadow_casters_;
+  FrameKit kit_;  // camera, renderers and culling of the frame
+  CullingResults shadow_casters_;
   MainLightShadowSetup shadow_setup_;
   RenderingData data_;
   RenderGraph graph_;
@@ -339,7 +331,6 @@ FrameOutputs UniversalPipeline::render(RenderContext& context, const FrameInputs
     }
   }
   in.options.reject_unknown(name());
-  if (!in.scene) throw Error("universal pipeline: no scene");
   FrameRecorder recorder(context, in, s);
   return recorder.record(features_, enabled);
 }
@@ -349,5 +340,9 @@ std::unique_ptr<UniversalPipeline> make_universal_pipeline() {
   pipeline->add_feature(std::make_unique<ScreenSpaceOutlineFeature>());
   return pipeline;
 }
+
+namespace {
+const PipelineRegistration kUniversal("universal", [] { return make_universal_pipeline(); });
+}  // namespace
 
 }  // namespace ontile

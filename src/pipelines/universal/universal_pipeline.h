@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "pipelines/pipeline.h"
+#include "pipelines/kit/pipeline.h"
 #include "pipelines/universal/main_light_shadows.h"
 #include "pipelines/universal/post_processing.h"
 #include "pipelines/universal/renderer_feature.h"

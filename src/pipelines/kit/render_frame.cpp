@@ -1,0 +1,37 @@
+// render_frame (see render_frame.h).
+#include "pipelines/kit/render_frame.h"
+
+#include "util/error.h"
+
+namespace ontile {
+
+Camera select_camera(const Scene& scene, int camera_index) {
+  if (camera_index < 0) return scene.cameras.empty() ? default_camera(scene) : scene.cameras[0];
+  if (camera_index >= static_cast<int>(scene.cameras.size())) {
+    throw Error(scene.source_path + ": camera " + std::to_string(camera_index) +
+                " out of range (the scene has " + std::to_string(scene.cameras.size()) + ")");
+  }
+  return scene.cameras[camera_index];
+}
+
+RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings) {
+  if (settings.width_px <= 0 || settings.height_px <= 0 || settings.width_px > kMaxTargetSizePx ||
+      settings.height_px > kMaxTargetSizePx) {
+    throw Error("image size " + std::to_string(settings.width_px) + "x" +
+                std::to_string(settings.height_px) + " outside 1.." + std::to_string(kMaxTargetSizePx));
+  }
+  RenderedFrame frame;
+  frame.camera = select_camera(scene, settings.camera_index);
+  std::unique_ptr<Pipeline> pipeline = make_pipeline(settings.pipeline);
+  frame.context = std::make_unique<RenderContext>(settings.context);
+  FrameInputs inputs;
+  inputs.scene = &scene;
+  inputs.camera = frame.camera;
+  inputs.width_px = settings.width_px;
+  inputs.height_px = settings.height_px;
+  inputs.options = settings.options;
+  frame.outputs = pipeline->render(*frame.context, inputs);
+  return frame;
+}
+
+}  // namespace ontile

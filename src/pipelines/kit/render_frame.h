@@ -1,0 +1,30 @@
+// One call that renders a frame of a scene with a named pipeline: picks the camera, sets up
+// the context (threads, tiles, budget) and returns the final image and traffic report.
+// Used by the CLI, the tests and the benchmarks so they all render the same way.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "pipelines/kit/pipeline.h"
+
+namespace ontile {
+
+struct RenderSettings {
+  std::string pipeline = "lambert";
+  int camera_index = -1;  // -1: the scene's first camera, or a default framing camera
+  int width_px = 1280, height_px = 720;
+  ContextConfig context;
+  PipelineOptions options;
+};
+
+struct RenderedFrame {
+  std::unique_ptr<RenderContext> context;  // owns the surfaces
+  FrameOutputs outputs;
+  Camera camera;
+};
+
+// Throws ontile::Error for an unknown pipeline, a camera index out of range or a bad size.
+Camera select_camera(const Scene& scene, int camera_index);
+RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings);
+
+}  // namespace ontile

@@ -1,0 +1,288 @@
+// Batched shading and the per-quad writes of a tile's triangle (see quad_batcher.h).
+#include "tiler/detail/quad_batcher.h"
+
+#include <bit>
+#include <cstring>
+
+#include "raster/blend.h"
+#include "tiler/detail/hierarchical_depth.h"
+#include "tiler/detail/quad_store_simd.h"
+
+namespace ontile {
+namespace {
+
+// Coverage bits of sample 0 in every lane; shifted left by s for sample s.
+constexpr QuadCoverage kSampleBits = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
+                                     (1u << (3 * kMaxSamples));
+
+int unorm_bits_of(const RenderPassDesc& pass) {
+  if (pass.depth_index < 0) return 0;
+  const PixelFormat f = pass.attachments[pass.depth_index].format;
+  return f == PixelFormat::D16_UNORM ? 16 : f == PixelFormat::D24S8 ? 24 : 0;
+}
+
+}  // namespace
+
+TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc& subpass_,
+                                 const DrawCall& draw_, const BinnedTriangle& tri_,
+                                 const float* varyings_, int varying_count_,
+                                 const SamplePattern& pattern_, const TileRect& rect_,
+                                 const FramebufferFetch* fetch_, uint32_t triangle_ref_,
+                                 std::vector<FragmentAccess>* fragments_)
+    : pass(pass_), subpass(subpass_), draw(draw_), tri(tri_), varyings(varyings_),
+      varying_count(varying_count_), pattern(pattern_), rect(rect_), fetch(fetch_),
+      triangle_ref(triangle_ref_), fragments(fragments_) {
+  has_depth = pass.depth_index >= 0;
+  depth_test = has_depth && draw.raster.depth_test;
+  depth_write = has_depth && draw.raster.depth_write && !subpass.depth_read_only;
+  late_z = draw.fragment_shader && draw.fragment_shader->may_discard();
+  per_sample = draw.fragment_shader && draw.fragment_shader->per_sample_shading();
+  write_color = draw.fragment_shader != nullptr;
+  depth_unorm_bits = unorm_bits_of(pass);
+  hiz_tracked = has_depth;
+  hiz_enabled = depth_test && !late_z && HierarchicalDepth::usable(draw.raster.depth_compare);
+}
+
+float TriangleContext::quantize_depth(double z) const {
+  float f = static_cast<float>(std::clamp(z, 0.0, 1.0));
+  if (depth_unorm_bits) f = unorm_to_float(float_to_unorm(f, depth_unorm_bits), depth_unorm_bits);
+  return f;
+}
+
+QuadBatcher::QuadBatcher() : batch_(std::make_unique<FragmentBatch>()) {
+  for (auto& out : outputs_) out = std::make_unique<BatchOutput>();
+}
+
+void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
+                        const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
+                        const float* cell_depth) {
+  ctx_ = &ctx;
+  memory_ = &memory;
+  counters_ = &counters;
+  cells_ = cells;
+  cells_x_ = cells_x;
+  first_cell_x_ = first_cell_x;
+  first_cell_y_ = first_cell_y;
+  cell_depth_ = cell_depth;
+  queued_ = 0;
+  opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
+}
+
+void QuadBatcher::flush() {
+  if (queued_ == 0) return;
+  const TriangleContext& ctx = *ctx_;
+  if (ctx.draw.fragment_shader) {
+    const int invocations = ctx.per_sample ? ctx.pattern.count : 1;
+    for (int inv = 0; inv < invocations; ++inv) shade_invocation(inv);
+  }
+  if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_ && !ctx.fragments) {
+    write_back_single_sample();
+  } else {
+    for (int q = 0; q < queued_; ++q) write_back(q);
+  }
+  queued_ = 0;
+}
+
+// Shades, at one sample position (or the pixel centre), every queued quad that has lanes for
+// it; discards then remove those lanes' samples from the quad's coverage.
+void QuadBatcher::shade_invocation(int inv) {
+  const TriangleContext& ctx = *ctx_;
+  const QuadCoverage sample_bits = ctx.per_sample ? kSampleBits << inv : ~QuadCoverage{0};
+  FragmentBatch& b = *batch_;
+  BatchOutput& out = *outputs_[inv];
+  const float off_x = ctx.per_sample ? static_cast<float>(ctx.pattern.x[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
+  const float off_y = ctx.per_sample ? static_cast<float>(ctx.pattern.y[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
+  int count = 0;
+  for (int q = 0; q < queued_; ++q) {
+    const QueuedQuad& quad = queue_[q];
+    const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
+    slot_[inv][q] = lanes ? count : -1;
+    if (!lanes) continue;
+    const CellState& cell = cells_[quad.cell];
+    const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
+    const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
+    b.quad_x_px[count] = quad.qx;
+    b.quad_y_px[count] = quad.qy;
+    b.lane_mask[count] = lanes;
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      const int f = count * kQuadLanes + lane;
+      fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
+      fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
+      l1_[f] = cell.planes[0].origin;
+      l2_[f] = cell.planes[1].origin;
+      z_[f] = cell.planes[2].origin;
+    }
+    ++count;
+  }
+  if (count == 0) return;
+  b.quad_count = count;
+  const int padded = b.padded_fragment_count();
+  // Padding repeats the last fragment so every SIMD lane computes finite, harmless values.
+  for (int f = count * kQuadLanes; f < padded; ++f) {
+    const int last = count * kQuadLanes - 1;
+    fx_[f] = fx_[last];
+    fy_[f] = fy_[last];
+    l1_[f] = l1_[last];
+    l2_[f] = l2_[last];
+    z_[f] = z_[last];
+  }
+  const CellPlane* planes = cells_[queue_[0].cell].planes;  // gradients are per triangle
+  InterpolationInput in{fx_, fy_, l1_, l2_, z_,
+                        planes[0].dx, planes[0].dy, planes[1].dx, planes[1].dy,
+                        planes[2].dx, planes[2].dy,
+                        {ctx.tri.setup.inv_w[0], ctx.tri.setup.inv_w[1], ctx.tri.setup.inv_w[2]},
+                        {ctx.varyings, ctx.varyings + ctx.varying_count, ctx.varyings + 2 * ctx.varying_count},
+                        ctx.varying_count};
+  interpolate_fragments(in, padded, b.depth, &b.varyings[0][0], kBatchFragments);
+  b.varying_count = ctx.varying_count;
+  b.color_output_count = static_cast<int>(ctx.subpass.color_outputs.size());
+  b.front_facing = ctx.tri.setup.front_facing;
+  b.primitive_id = ctx.tri.primitive_id;
+  b.sample = ctx.per_sample ? inv : -1;
+  b.fetch = ctx.fetch;
+  // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
+  // images never depend on earlier contents.
+  for (int k = 0; k < b.color_output_count; ++k) {
+    std::memset(out.color[k], 0, sizeof(out.color[k]));
+  }
+  out.discard_mask = 0;
+  ctx.draw.fragment_shader->shade_batch(b, out);
+  // Opaque writes do not depend on the destination: quantise the whole batch per output in one
+  // pass (the same values write_back would compute one by one).
+  if (opaque_writes_) {
+    for (int k = 0; k < b.color_output_count; ++k) {
+      const PixelFormat format = ctx.pass.attachments[ctx.subpass.color_outputs[k]].format;
+      // The padded count keeps every SIMD vector whole; padding lanes are never written back.
+      quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
+                      padded);
+    }
+  }
+  for (int q = 0; q < queued_; ++q) {
+    const int slot = slot_[inv][q];
+    if (slot < 0) continue;
+    counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
+    const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!((discarded >> lane) & 1u)) continue;
+      const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
+      queue_[q].passing &= ~lane_bits;
+      queue_[q].coverage &= ~lane_bits;
+    }
+  }
+}
+
+namespace {
+
+// Records, per covered pixel, which samples were covered and written and what was accessed.
+void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
+                      QuadCoverage written) {
+  const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
+    if (!covered) continue;
+    FragmentAccess f;
+    f.triangle_ref = ctx.triangle_ref;
+    f.x_px = static_cast<uint16_t>(qx + (lane & 1));
+    f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
+    f.covered_samples = covered;
+    f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
+    f.subpass = static_cast<uint8_t>(ctx.tri.subpass);
+    if (ctx.depth_test) f.flags |= kDepthRead;
+    if (f.written_samples && ctx.depth_write) f.flags |= kDepthWritten;
+    if (f.written_samples && ctx.write_color && !ctx.subpass.color_outputs.empty()) {
+      f.flags |= kColorWritten;
+      if (blend_reads) f.flags |= kColorRead;
+    }
+    ctx.fragments->push_back(f);
+  }
+}
+
+}  // namespace
+
+void QuadBatcher::write_back(int q) {
+  const TriangleContext& ctx = *ctx_;
+  const QueuedQuad& quad = queue_[q];
+  const QuadCoverage passing = quad.passing;
+  if (ctx.late_z) {
+    counters_->fragments_depth_rejected +=
+        lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
+  }
+  if (ctx.fragments) record_fragments(ctx, quad.qx, quad.qy, quad.coverage, passing);
+  if (!passing) return;
+  const int samples = ctx.pattern.count;
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
+  const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
+  const float* z = cell_depth_ + static_cast<size_t>(quad.cell) * kMaxSamples * kCellPixels;
+  const bool late_depth_write = ctx.late_z && ctx.depth_write;
+  float* depth_plane = memory_->depth_plane();
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    const unsigned lane_bits = lane_coverage(passing, lane);
+    if (!lane_bits) continue;
+    const int x = quad.qx + (lane & 1), y = quad.qy + (lane >> 1);
+    for (int s = 0; s < samples; ++s) {
+      if (!((lane_bits >> s) & 1u)) continue;
+      const size_t i = memory_->index(x - ctx.rect.x0, y - ctx.rect.y0, s);
+      if (late_depth_write) depth_plane[i] = z[s * kCellPixels + (y - cy) * kCellSizePx + (x - cx)];
+      if (ctx.write_color) {
+        const int inv = ctx.per_sample ? s : 0;
+        const BatchOutput& out = *outputs_[inv];
+        const int f = slot_[inv][q] * kQuadLanes + lane;
+        for (size_t k = 0; k < outputs.size(); ++k) {
+          const int a = outputs[k];
+          glm::vec4& dst = memory_->color_plane(a)[i];
+          if (opaque_writes_) {
+            dst = out.get(static_cast<int>(k), f);
+          } else {
+            dst = quantize_pixel(ctx.pass.attachments[a].format,
+                                 blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f), dst));
+          }
+        }
+      }
+      ++counters_->samples_written;
+    }
+  }
+}
+
+// write_back for the common case, the batch at once: one sample per pixel, depth already
+// written by early Z, outputs already quantised per batch. Quads whose four lanes all pass are
+// copied to tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never
+// share a pixel, so the order of their writes does not matter.
+void QuadBatcher::write_back_single_sample() {
+  const TriangleContext& ctx = *ctx_;
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  const BatchOutput& out = *outputs_[0];
+  int full_quads = 0;
+  for (int q = 0; q < queued_; ++q) {
+    const QueuedQuad& quad = queue_[q];
+    const uint8_t lanes = lanes_of(quad.passing);
+    counters_->samples_written += lane_count(lanes);
+    if (!lanes || !ctx.write_color) continue;
+    const int first = slot_[0][q] * kQuadLanes;
+    const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
+    if (lanes == 0xF) {
+      full_first_fragment_[full_quads] = first;
+      full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
+      ++full_quads;
+      continue;
+    }
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if (!((lanes >> lane) & 1u)) continue;
+      const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
+      const int f = first + lane;
+      for (size_t k = 0; k < outputs.size(); ++k) {
+        memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
+                                               out.color[k][2][f], out.color[k][3][f]};
+      }
+    }
+  }
+  if (full_quads == 0) return;
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                      out.color[k][3]};
+    store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
+                     memory_->color_plane(outputs[k]));
+  }
+}
+
+}  // namespace ontile

@@ -1,0 +1,120 @@
+// The shading half of a tile's triangle: queues the triangle's covered quads in row-major
+// order, shades them in batches of up to 16 quads per functor call (structure-of-arrays
+// varyings interpolated on SIMD lanes), then applies discards, late depth, blending and the
+// attachment formats' quantisation, quad by quad in queue order.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "raster/cell_raster.h"
+#include "raster/pixel_format.h"
+#include "raster/rasterize.h"
+#include "raster/shader_interface.h"
+#include "tiler/detail/parameter_buffer.h"
+#include "tiler/detail/tile_load_store.h"
+#include "tiler/detail/tile_memory.h"
+#include "tiler/detail/tile_trace.h"
+
+namespace ontile {
+
+// Lanes with at least one covered sample: the non-zero bytes of the coverage (one byte of
+// sample bits per lane). Each byte is folded onto its lowest bit, then bits 0, 8, 16 and 24 are
+// gathered into bits 0-3 by one multiply (bit 8i moves to 24 + i; no two partial products meet,
+// so nothing carries). Called several times per quad, where a loop over lanes cost ~20
+// instructions.
+inline uint8_t lanes_of(QuadCoverage coverage) {
+  static_assert(kMaxSamples == 8 && kQuadLanes == 4 && sizeof(QuadCoverage) == 4);
+  uint32_t folded = coverage | coverage >> 4;
+  folded |= folded >> 2;
+  folded |= folded >> 1;
+  return static_cast<uint8_t>(((folded & 0x01010101u) * 0x01020408u) >> 24);
+}
+
+// How many of a quad's 4 lanes a lane mask holds: a nibble table, since the baseline x86-64
+// target has no popcount instruction and std::popcount becomes a library call per quad.
+inline int lane_count(uint8_t lanes) {
+  return static_cast<int>((0x4332322132212110ull >> (4u * (lanes & 0xFu))) & 0xFu);
+}
+
+// What one triangle of a tile needs to know about its draw, pass and state.
+struct TriangleContext {
+  const RenderPassDesc& pass;
+  const SubpassDesc& subpass;
+  const DrawCall& draw;
+  const BinnedTriangle& tri;
+  const float* varyings;  // 3 * varying_count, setup slot order
+  int varying_count;
+  const SamplePattern& pattern;
+  const TileRect& rect;
+  const FramebufferFetch* fetch;
+  uint32_t triangle_ref;
+  std::vector<FragmentAccess>* fragments;  // null unless recording for the IMR model
+
+  bool has_depth, depth_test, depth_write, late_z, per_sample, write_color;
+  // A fixed-point depth attachment (D16, D24S8) converts the fragment's depth to its format
+  // before the depth test (Vulkan 1.3 "Depth Test", Fixed-Point Data Conversions): tile memory
+  // keeps floats, so the incoming depth is quantised and the quantised value tested and written.
+  int depth_unorm_bits;
+  bool hiz_tracked;  // the pass has depth: cells keep their depth bounds
+  bool hiz_enabled;  // this draw may skip cells by hierarchical Z (early Z, ordering compare)
+
+  TriangleContext(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw,
+                  const BinnedTriangle& tri, const float* varyings, int varying_count,
+                  const SamplePattern& pattern, const TileRect& rect,
+                  const FramebufferFetch* fetch, uint32_t triangle_ref,
+                  std::vector<FragmentAccess>* fragments);
+  float quantize_depth(double z) const;
+};
+
+// Per-cell results of coverage and early depth for the current triangle.
+struct CellState {
+  CellMask covered_any = 0;
+  CellMask covered[kMaxSamples] = {};
+  CellMask passing[kMaxSamples] = {};
+  CellPlane planes[3];  // lambda1, lambda2, depth at the cell's origin
+};
+
+struct QueuedQuad {
+  int qx, qy, cell;
+  QuadCoverage coverage, passing;
+};
+
+class QuadBatcher {
+ public:
+  QuadBatcher();
+  // Starts a triangle: cells and cell_depth are the tile's per-cell state (see tile_executor).
+  void begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
+             const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
+             const float* cell_depth);
+  void add(const QueuedQuad& quad) {
+    queue_[queued_++] = quad;
+    if (queued_ == kBatchQuads) flush();
+  }
+  void flush();
+
+ private:
+  void shade_invocation(int invocation);
+  void write_back(int q);
+  void write_back_single_sample();
+
+  const TriangleContext* ctx_ = nullptr;
+  TileMemory* memory_ = nullptr;
+  TileCounters* counters_ = nullptr;
+  const CellState* cells_ = nullptr;
+  int cells_x_ = 0, first_cell_x_ = 0, first_cell_y_ = 0;
+  const float* cell_depth_ = nullptr;
+  bool opaque_writes_ = false;  // blending is a plain overwrite: outputs are quantised per batch
+  QueuedQuad queue_[kBatchQuads];
+  int queued_ = 0;
+  int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1
+  std::unique_ptr<FragmentBatch> batch_;
+  std::unique_ptr<BatchOutput> outputs_[kMaxSamples];
+  // Interpolation inputs per batch fragment.
+  alignas(64) float fx_[kBatchFragments], fy_[kBatchFragments];
+  alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
+  // write_back_single_sample's quads whose lanes all pass: first fragment, tile pixel index.
+  int32_t full_first_fragment_[kBatchQuads];
+  uint32_t full_pixel_[kBatchQuads];
+};
+
+}  // namespace ontile

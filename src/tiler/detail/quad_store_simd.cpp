@@ -1,0 +1,62 @@
+// SIMD quad write-back (see quad_store_simd.h), compiled per target by Highway's foreach_target.
+// Loads, shuffles and stores only, so every target writes the same bits.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "tiler/detail/quad_store_simd.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "tiler/detail/quad_store_simd.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_fragment,
+                          const uint32_t* pixel, int quad_count, int row_pixels,
+                          glm::vec4* plane) {
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a vec4 is four packed floats");
+  // The plane as floats (four per pixel), not through a vec4's member.
+  float* const floats = reinterpret_cast<float*>(plane);
+  const size_t row_floats = 4 * static_cast<size_t>(row_pixels);
+  for (int q = 0; q < quad_count; ++q) {
+    const int32_t f = first_fragment[q];
+    float* top = floats + 4 * static_cast<size_t>(pixel[q]);
+    float* bottom = top + row_floats;
+#if HWY_TARGET == HWY_SCALAR
+    for (int lane = 0; lane < 4; ++lane) {
+      float* dst = (lane < 2 ? top : bottom) + 4 * (lane & 1);
+      for (int c = 0; c < 4; ++c) dst[c] = channels[c][f + lane];
+    }
+#else
+    // A 4x4 transpose of the quad's four lanes of R, G, B, A into four RGBA pixels.
+    const hn::Full128<float> d;
+    const auto r = hn::LoadU(d, channels[0] + f), g = hn::LoadU(d, channels[1] + f);
+    const auto b = hn::LoadU(d, channels[2] + f), a = hn::LoadU(d, channels[3] + f);
+    const auto rg_low = hn::InterleaveLower(d, r, g), ba_low = hn::InterleaveLower(d, b, a);
+    const auto rg_high = hn::InterleaveUpper(d, r, g), ba_high = hn::InterleaveUpper(d, b, a);
+    hn::StoreU(hn::ConcatLowerLower(d, ba_low, rg_low), d, top);
+    hn::StoreU(hn::ConcatUpperUpper(d, ba_low, rg_low), d, top + 4);
+    hn::StoreU(hn::ConcatLowerLower(d, ba_high, rg_high), d, bottom);
+    hn::StoreU(hn::ConcatUpperUpper(d, ba_high, rg_high), d, bottom + 4);
+#endif
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile {
+
+HWY_EXPORT(StoreFullQuadsKernel);
+
+void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
+                      const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane) {
+  HWY_DYNAMIC_DISPATCH(StoreFullQuadsKernel)(channels, first_fragment, pixel, quad_count,
+                                             row_pixels, plane);
+}
+
+}  // namespace ontile
+#endif  // HWY_ONCE

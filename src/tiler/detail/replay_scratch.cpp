@@ -1,0 +1,67 @@
+// The texture replay's pooled working memory (see replay_scratch.h).
+#include "tiler/detail/replay_scratch.h"
+
+#include <algorithm>
+#include <cstring>
+#include <mutex>
+#include <new>
+
+namespace ontile {
+namespace {
+
+struct Pool {
+  std::mutex mutex;
+  std::vector<std::unique_ptr<ReplayScratch>> free;
+};
+
+Pool& pool() {
+  static Pool instance;
+  return instance;
+}
+
+}  // namespace
+
+uint64_t* GranuleBuffer::reserve_tail(size_t count) {
+  if (size_ + count > capacity_) {
+    const size_t capacity = std::max(size_ + count, 2 * capacity_);
+    std::unique_ptr<uint64_t[]> grown = std::make_unique_for_overwrite<uint64_t[]>(capacity);
+    if (size_ > 0) std::memcpy(grown.get(), data_.get(), size_ * sizeof(uint64_t));
+    data_ = std::move(grown);
+    capacity_ = capacity;
+  }
+  return data_.get() + size_;
+}
+
+void ReplayScratch::prepare(size_t tile_count, size_t worker_count, size_t group_count) {
+  if (workers.size() < worker_count) workers.resize(worker_count);
+  for (Worker& worker : workers) {
+    if (worker.groups.size() < group_count) worker.groups.resize(group_count);
+    for (GranuleBuffer& group : worker.groups) group.clear();
+    worker.region_ids.clear();
+  }
+  tiles.assign(tile_count, Tile{});
+  group_ranges.assign(2 * tile_count * group_count, 0);
+  if (group_tags.size() < group_count) group_tags.resize(group_count);
+}
+
+ReplayScratchLease::ReplayScratchLease() {
+  {
+    const std::lock_guard<std::mutex> lock(pool().mutex);
+    if (!pool().free.empty()) {
+      scratch_ = std::move(pool().free.back());
+      pool().free.pop_back();
+    }
+  }
+  if (!scratch_) scratch_ = std::make_unique<ReplayScratch>();
+}
+
+ReplayScratchLease::~ReplayScratchLease() {
+  const std::lock_guard<std::mutex> lock(pool().mutex);
+  try {
+    pool().free.push_back(std::move(scratch_));
+  } catch (const std::bad_alloc&) {
+    // No room to keep it: freed instead, the next lease makes a new one.
+  }
+}
+
+}  // namespace ontile

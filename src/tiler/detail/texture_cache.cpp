@@ -1,0 +1,83 @@
+// The texture cache model (see texture_cache.h): config validation and the placement of texture
+// regions in the frame's address space.
+#include "tiler/detail/texture_cache.h"
+
+#include "raster/texture.h"
+
+#include <bit>
+#include <string>
+
+#include "util/error.h"
+
+static_assert(ontile::TextureCache::kRegionShiftGranules == ontile::Texture2D::kTextureIdShift - 6);
+
+namespace ontile {
+namespace {
+
+// The trace records 64-byte granules (raster/texel_trace.h), so a line holds a whole number
+// of them.
+constexpr uint32_t kGranuleBytes = 64;
+constexpr uint64_t kEmptyWay = ~uint64_t{0};
+
+void validate(const TextureCacheConfig& config) {
+  const std::string where = "texture cache config: ";
+  if (config.line_bytes < kGranuleBytes || !std::has_single_bit(config.line_bytes)) {
+    throw Error(where + "line_bytes " + std::to_string(config.line_bytes) +
+                " must be a power of two >= 64");
+  }
+  if (config.ways < 1) throw Error(where + "ways must be >= 1 (got 0)");
+  const uint64_t set_bytes = uint64_t{config.line_bytes} * config.ways;
+  if (config.size_bytes == 0 || config.size_bytes % set_bytes != 0) {
+    throw Error(where + "size_bytes " + std::to_string(config.size_bytes) +
+                " must be a positive multiple of line_bytes x ways (" +
+                std::to_string(set_bytes) + ")");
+  }
+}
+
+}  // namespace
+
+void TextureTraffic::add(const TextureTraffic& o) {
+  accesses += o.accesses;
+  hits += o.hits;
+  misses += o.misses;
+  bytes_read += o.bytes_read;
+}
+
+TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
+  validate(config_);
+  const auto sets =
+      static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
+  tags_.assign(static_cast<size_t>(sets) * config_.ways, kEmptyWay);
+  sets_.tags = tags_.data();
+  sets_.ways = config_.ways;
+  sets_.sets = sets;
+  sets_.line_shift = std::countr_zero(config_.line_bytes / kGranuleBytes);
+  sets_.sets_are_power_of_two = std::has_single_bit(sets);
+}
+
+uint64_t TextureCache::frame_base_granule(uint64_t id) {
+  auto it = frame_base_granule_.find(id);
+  if (it == frame_base_granule_.end()) {
+    // Frame-local placement starts above the id-0 range so the two never overlap.
+    if (next_frame_granule_ == 0) next_frame_granule_ = uint64_t{1} << kRegionShiftGranules;
+    it = frame_base_granule_.emplace(id, next_frame_granule_).first;
+    next_frame_granule_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
+  }
+  return it->second;
+}
+
+uint64_t TextureCache::place(uint64_t id) {
+  if (id == 0) return 0;
+  return frame_base_granule(id) - (id << kRegionShiftGranules);
+}
+
+uint64_t TextureCache::placed_offset(uint64_t id) const {
+  if (id == 0) return 0;
+  const auto it = frame_base_granule_.find(id);
+  if (it == frame_base_granule_.end()) {
+    throw Error("texture region " + std::to_string(id) + " was never placed in this frame");
+  }
+  return it->second - (id << kRegionShiftGranules);
+}
+
+}  // namespace ontile

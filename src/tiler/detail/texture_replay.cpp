@@ -1,0 +1,208 @@
+// The replay of a pass's texture traces through the texture-cache model (texture_cache.h), with
+// the counts of a serial per-access replay in tile-index order at any thread count.
+//
+// Serial: one pass over the tiles, regions placed as they are met (first-use order).
+// Parallel: a set's hits and misses depend only on the order of its own accesses, so the sets are
+// split into G = 2^b groups, replayed by different threads, each seeing its accesses in tile
+// order. The group of a granule is the low b bits of its line, which are also bits of its set
+// (set counts that are powers of two >= G), and are the same in the traced and the frame address
+// (regions are placed on 4 KiB = 64-granule boundaries, so for lines of 64 << s bytes b <= 6 - s
+// bits are placement-independent). So, all in parallel over tiles, each tile's granules are
+// split by group into its worker's buffers while the regions it uses are listed; the regions are
+// then placed in tile order (serially, a few per tile), and each group replays its buffers in
+// tile order on a private copy of its sets. Other set counts and line sizes, and fewer than
+// kMinimumParallelThreads threads, replay serially.
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <span>
+#include <vector>
+
+#include <tbb/task_arena.h>
+
+#include "tiler/detail/replay_scratch.h"
+#include "tiler/detail/texture_cache.h"
+#include "tiler/detail/texture_replay_kernel.h"
+#include "tiler/detail/texture_replay_observer.h"
+#include "util/parallel_for.h"
+
+namespace ontile {
+namespace {
+
+std::atomic<TextureReplayObserver*> observer{nullptr};
+
+constexpr int kRegionShift = TextureCache::kRegionShiftGranules;
+// Granules per placement boundary: texture regions start on 4 KiB boundaries.
+constexpr int kPlacementAlignmentBits = 6;
+
+uint64_t place_region(void* cache, uint64_t id) {
+  return static_cast<TextureCache*>(cache)->place(id);
+}
+uint64_t placed_region(void* cache, uint64_t id) {
+  return static_cast<const TextureCache*>(cache)->placed_offset(id);
+}
+
+TextureTraffic traffic_of(uint64_t accesses, uint64_t misses, const TextureCache& cache) {
+  TextureTraffic traffic;
+  traffic.accesses = accesses;
+  traffic.hits = accesses - misses;
+  traffic.misses = misses;
+  traffic.bytes_read = misses * cache.config().line_bytes;
+  return traffic;
+}
+
+TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces) {
+  RegionTable regions(place_region, &cache);
+  uint64_t accesses = 0, misses = 0;
+  for (const TileTrace& trace : traces) {
+    const std::span<const uint64_t> granules = trace.texture_granules.granules();
+    accesses += granules.size();
+    misses += replay_granules(cache.sets(), regions, granules.data(), granules.size());
+  }
+  return traffic_of(accesses, misses, cache);
+}
+
+// Splitting the granules by group costs about twice what replaying them costs (callgrind, demo
+// cartoon 960x540: 21 and 11 instructions per access), so fewer threads than this replay faster
+// serially.
+constexpr int kMinimumParallelThreads = 4;
+
+// log2 of the number of set groups for `threads` threads: enough groups for every thread, no
+// more than the placement-independent bits and the sets allow; 0 = replay serially.
+int group_bits_for(const SetArray& sets, int threads) {
+  if (threads < kMinimumParallelThreads || !sets.sets_are_power_of_two) return 0;
+  const int wanted = std::bit_width(static_cast<unsigned>(threads - 1));  // ceil(log2(threads))
+  const int placement_independent = std::max(0, kPlacementAlignmentBits - sets.line_shift);
+  return std::min({wanted, placement_independent, std::countr_zero(sets.sets)});
+}
+
+// One tile: its granules appended to its worker's group buffers (group = low bits of the line),
+// its regions (id != 0) appended to the worker's list in first-use order.
+void split_tile(std::span<const uint64_t> granules, int line_shift, int group_bits,
+                ReplayScratch::Worker& worker, size_t* ranges) {
+  const size_t groups = size_t{1} << group_bits;
+  uint64_t* write[size_t{1} << kPlacementAlignmentBits];
+  for (size_t k = 0; k < groups; ++k) {
+    write[k] = worker.groups[k].reserve_tail(granules.size());
+    ranges[2 * k] = worker.groups[k].size();
+  }
+  const uint64_t group_mask = groups - 1;
+  const size_t ids_begin = worker.region_ids.size();
+  // Shaders sampling two textures alternate between them every few granules: the region before
+  // the last one is checked before the tile's list.
+  uint64_t last_id = ~uint64_t{0}, previous_id = ~uint64_t{0};
+  for (const uint64_t granule : granules) {
+    const uint64_t id = granule >> kRegionShift;
+    if (id != last_id) {
+      const uint64_t left = last_id;
+      last_id = id;
+      if (id != previous_id) {
+        const auto first = worker.region_ids.begin() + static_cast<std::ptrdiff_t>(ids_begin);
+        if (id != 0 && std::find(first, worker.region_ids.end(), id) == worker.region_ids.end()) {
+          worker.region_ids.push_back(id);
+        }
+      }
+      previous_id = left;
+    }
+    *write[(granule >> line_shift) & group_mask]++ = granule;
+  }
+  for (size_t k = 0; k < groups; ++k) {
+    const size_t end = static_cast<size_t>(write[k] - worker.groups[k].data());
+    ranges[2 * k + 1] = end;
+    worker.groups[k].resize_within_capacity(end);
+  }
+}
+
+// Group k's sets (set & (G - 1) == k), as set index j = set >> b in a SetArray of their own, so
+// no two threads write one cache line of ways.
+SetArray group_sets(const SetArray& all, int group_bits, std::vector<uint64_t>& storage) {
+  SetArray group = all;
+  group.sets = all.sets >> group_bits;
+  group.index_shift = group_bits;
+  storage.resize(static_cast<size_t>(group.sets) * all.ways);
+  group.tags = storage.data();
+  return group;
+}
+
+// Copies group k's ways between the cache's SetArray and the group's own (to_group: into it).
+void copy_group_ways(const SetArray& all, const SetArray& group, uint32_t k, int group_bits,
+                     bool to_group) {
+  for (uint32_t way = 0; way < all.ways; ++way) {
+    uint64_t* cache_way = all.tags + static_cast<size_t>(way) * all.sets + k;
+    uint64_t* group_way = group.tags + static_cast<size_t>(way) * group.sets;
+    for (uint32_t j = 0; j < group.sets; ++j) {
+      uint64_t& in_cache = cache_way[static_cast<size_t>(j) << group_bits];
+      if (to_group) {
+        group_way[j] = in_cache;
+      } else {
+        in_cache = group_way[j];
+      }
+    }
+  }
+}
+
+TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>& traces,
+                               int threads, int group_bits) {
+  const SetArray& sets = cache.sets();
+  const size_t groups = size_t{1} << group_bits;
+  const size_t tile_count = traces.size();
+  const ReplayScratchLease scratch;
+  scratch->prepare(tile_count, static_cast<size_t>(threads), groups);
+  // 1. Split every tile's granules by group, listing the regions each tile uses.
+  ontile::parallel_for(size_t{0}, tile_count, [&](size_t t) {
+    const auto worker = static_cast<uint32_t>(tbb::this_task_arena::current_thread_index());
+    ReplayScratch::Worker& w = scratch->workers[worker];
+    ReplayScratch::Tile& tile = scratch->tiles[t];
+    tile.worker = worker;
+    tile.region_ids_begin = static_cast<uint32_t>(w.region_ids.size());
+    split_tile(traces[t].texture_granules.granules(), sets.line_shift, group_bits, w,
+               &scratch->group_ranges[2 * t * groups]);
+    tile.region_ids_end = static_cast<uint32_t>(w.region_ids.size());
+  });
+  // 2. Regions placed in first-use order: tiles in index order, each tile's in its order.
+  uint64_t accesses = 0;
+  for (size_t t = 0; t < tile_count; ++t) {
+    const ReplayScratch::Tile& tile = scratch->tiles[t];
+    const std::vector<uint64_t>& ids = scratch->workers[tile.worker].region_ids;
+    for (uint32_t i = tile.region_ids_begin; i < tile.region_ids_end; ++i) cache.place(ids[i]);
+    accesses += traces[t].texture_granules.granules().size();
+  }
+  // 3. Each group's accesses in tile order, on its own copy of its sets.
+  std::vector<uint64_t> group_misses(groups, 0);
+  ontile::parallel_for(size_t{0}, groups, [&](size_t k) {
+    const SetArray group = group_sets(sets, group_bits, scratch->group_tags[k]);
+    copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, true);
+    RegionTable regions(placed_region, &cache);
+    uint64_t misses = 0;
+    for (size_t t = 0; t < tile_count; ++t) {
+      const size_t* range = &scratch->group_ranges[2 * (t * groups + k)];
+      const uint64_t* granules = scratch->workers[scratch->tiles[t].worker].groups[k].data();
+      misses += replay_granules(group, regions, granules + range[0], range[1] - range[0]);
+    }
+    copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, false);
+    group_misses[k] = misses;
+  });
+  uint64_t misses = 0;
+  for (const uint64_t m : group_misses) misses += m;
+  return traffic_of(accesses, misses, cache);
+}
+
+}  // namespace
+
+void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
+  observer.store(replay_observer);
+}
+
+TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
+  TextureReplayObserver* const watching = observer.load();
+  if (watching != nullptr) watching->before_replay(cache, traces);
+  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
+  const int group_bits = group_bits_for(cache.sets(), threads);
+  const TextureTraffic traffic = group_bits == 0
+                                     ? replay_serial(cache, traces)
+                                     : replay_parallel(cache, traces, threads, group_bits);
+  if (watching != nullptr) watching->after_replay(cache, traffic);
+  return traffic;
+}
+
+}  // namespace ontile

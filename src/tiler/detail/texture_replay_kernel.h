@@ -1,0 +1,46 @@
+// The inner loop of the texture-cache replay (texture_replay.cpp): one stream of traced granules
+// through a SetArray, most-recent-way hits tested on SIMD lanes (texture_replay_simd.cpp, Highway
+// with runtime dispatch), everything else one access at a time in stream order, so the counts
+// are those of a plain per-access loop on every target.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "tiler/detail/texture_cache.h"
+
+namespace ontile {
+
+// Texture region id (traced granule >> kRegionShiftGranules) -> frame offset (what
+// TextureCache::place returns), direct-mapped by the id's low bits. A region missing from its
+// slot is asked of `resolve` (in stream order, so a serial replay places regions in first-use
+// order) and replaces the slot's previous region.
+struct RegionTable {
+  static constexpr size_t kSlots = 64;
+  alignas(64) uint64_t ids[kSlots];
+  alignas(64) uint64_t offsets[kSlots];
+  uint64_t (*resolve)(void* context, uint64_t id) = nullptr;
+  void* context = nullptr;
+
+  RegionTable(uint64_t (*resolve_offset)(void*, uint64_t), void* resolve_context)
+      : resolve(resolve_offset), context(resolve_context) {
+    for (size_t slot = 0; slot < kSlots; ++slot) {
+      ids[slot] = ~uint64_t{0};  // no region: ids are below 2^30
+      offsets[slot] = 0;
+    }
+  }
+  uint64_t offset(uint64_t id) {
+    const size_t slot = id & (kSlots - 1);
+    if (ids[slot] != id) {
+      offsets[slot] = resolve(context, id);
+      ids[slot] = id;
+    }
+    return offsets[slot];
+  }
+};
+
+// Every granule of [granules, granules + count) in order: frame granule = granule + its region's
+// offset, then sets.access. Returns the number of misses.
+uint64_t replay_granules(const SetArray& sets, RegionTable& regions, const uint64_t* granules,
+                         size_t count);
+
+}  // namespace ontile

@@ -1,0 +1,23 @@
+// A test seam of the texture-cache replay: an observer that sees every pass's traces before
+// replay_texture_traces replays them and the counts it returns, so tests can check the counts
+// against a replay of their own (tests/tiler/texture_replay_pipelines_test.cpp).
+#pragma once
+#include <vector>
+
+#include "tiler/detail/texture_cache.h"
+
+namespace ontile {
+
+class TextureReplayObserver {
+ public:
+  virtual ~TextureReplayObserver() = default;
+  // Called by the replaying thread; passes of different contexts may replay at the same time.
+  virtual void before_replay(const TextureCache& cache, const std::vector<TileTrace>& traces) = 0;
+  virtual void after_replay(const TextureCache& cache, const TextureTraffic& traffic) = 0;
+};
+
+// Installs `observer` (nullptr: none) for every later replay; the caller keeps it alive until it
+// is replaced. Not to be called while a pass is replaying.
+void set_texture_replay_observer(TextureReplayObserver* observer);
+
+}  // namespace ontile

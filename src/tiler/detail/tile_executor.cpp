@@ -1,0 +1,312 @@
+// Per-tile replay of the primitive list (see tile_executor.h). For each triangle: coverage and
+// early depth per 8x8 cell (trivial reject/accept, SIMD edge evaluation, hierarchical Z), then
+// shading of the surviving quads in the tile's row-major quad order, in batches of up to 16
+// quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
+#include "tiler/detail/tile_executor.h"
+
+#include <bit>
+
+#include "raster/cell_raster.h"
+#include "raster/texel_trace.h"
+#include "tiler/detail/hierarchical_depth.h"
+#include "tiler/detail/quad_batcher.h"
+#include "tiler/detail/tile_load_store.h"
+#include "util/error.h"
+
+namespace ontile {
+namespace {
+
+// Framebuffer fetch from this tile's memory (Vulkan subpassLoad): the quad passes its own
+// pixel coordinates, so only the current pixel is reachable.
+class TileFetch final : public FramebufferFetch {
+ public:
+  TileFetch(const TileMemory& memory, const TileRect& rect, const std::vector<int>& inputs,
+            int depth_index)
+      : memory_(memory), rect_(rect), inputs_(inputs), depth_index_(depth_index) {}
+  glm::vec4 load(int input_slot, int x_px, int y_px, int sample) const override {
+    if (input_slot < 0 || input_slot >= static_cast<int>(inputs_.size())) {
+      throw Error("framebuffer fetch of input slot " + std::to_string(input_slot) +
+                  ", but the subpass declares " + std::to_string(inputs_.size()) + " inputs");
+    }
+    const int attachment = inputs_[input_slot];
+    const size_t i = memory_.index(x_px - rect_.x0, y_px - rect_.y0, sample);
+    if (attachment == depth_index_) return {memory_.depth_plane()[i], 0.0f, 0.0f, 1.0f};
+    return memory_.color_plane(attachment)[i];
+  }
+
+ private:
+  const TileMemory& memory_;
+  const TileRect& rect_;
+  const std::vector<int>& inputs_;
+  int depth_index_;
+};
+
+// The 4 lanes of the quad whose top-left pixel is bit (ly * 8 + lx) of a cell mask.
+inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
+  const int bit = ly * kCellSizePx + lx;
+  return static_cast<uint32_t>(((m >> bit) & 3u) | (((m >> (bit + kCellSizePx)) & 3u) << 2));
+}
+
+// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s).
+inline QuadCoverage spread_lanes(uint32_t lanes, int s) {
+  QuadCoverage c = 0;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    if ((lanes >> lane) & 1u) c |= QuadCoverage{1} << (lane * kMaxSamples + s);
+  }
+  return c;
+}
+
+// Scratch reused by every tile a thread runs (no allocation in the tile loop once warm).
+struct TileScratch {
+  HierarchicalDepth hiz;
+  std::vector<CellState> cells;
+  std::vector<float> cell_depth;  // per cell, per sample, 64 depths (row-major in the cell)
+  std::vector<int> touched;       // cells the current triangle covered
+  QuadBatcher batcher;
+};
+
+TileScratch& tile_scratch() {
+  thread_local TileScratch scratch;
+  return scratch;
+}
+
+// The cells of a tile: cell (i, j) has its top-left pixel at (first_x + 8 i, first_y + 8 j).
+struct TileCells {
+  int first_x = 0, first_y = 0, cells_x = 0, cells_y = 0;
+  explicit TileCells(const TileRect& r)
+      : first_x(r.x0 & ~(kCellSizePx - 1)), first_y(r.y0 & ~(kCellSizePx - 1)),
+        cells_x((r.x0 + r.width - first_x + kCellSizePx - 1) / kCellSizePx),
+        cells_y((r.y0 + r.height - first_y + kCellSizePx - 1) / kCellSizePx) {}
+  int count() const { return cells_x * cells_y; }
+};
+
+// Stored depth of cell `cell` as rows for HierarchicalDepth::refresh.
+void refresh_hiz(HierarchicalDepth& hiz, const TileCells& cells, int cell, const TileRect& rect,
+                 TileMemory& memory) {
+  const int cx = cells.first_x + (cell % cells.cells_x) * kCellSizePx;
+  const int cy = cells.first_y + (cell / cells.cells_x) * kCellSizePx;
+  const int x0 = std::max(cx, rect.x0), x1 = std::min(cx + kCellSizePx, rect.x0 + rect.width);
+  const int y0 = std::max(cy, rect.y0), y1 = std::min(cy + kCellSizePx, rect.y0 + rect.height);
+  const float* first = memory.depth_plane() + memory.index(x0 - rect.x0, y0 - rect.y0, 0);
+  hiz.refresh(cell, first, memory.width() * memory.samples(), (x1 - x0) * memory.samples(), y1 - y0);
+}
+
+// Coverage, hierarchical Z and (for early-Z draws) the depth test and write of every cell the
+// triangle touches in this tile; fills scratch.cells for the quad pass.
+void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
+                     TileCounters& counters, TileScratch& scratch) {
+  const TriangleSetup& t = ctx.tri.setup;
+  const TileRect& rect = ctx.rect;
+  const int samples = ctx.pattern.count;
+  const TrianglePlanes planes(t);
+  const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
+  const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
+  const int ci0 = (std::max(rect.x0, t.min_x) - cells.first_x) / kCellSizePx;
+  const int cj0 = (std::max(rect.y0, t.min_y) - cells.first_y) / kCellSizePx;
+  const int ci1 = (x_end - 1 - cells.first_x) / kCellSizePx;
+  const int cj1 = (y_end - 1 - cells.first_y) / kCellSizePx;
+  for (int cj = cj0; cj <= cj1; ++cj) {
+    for (int ci = ci0; ci <= ci1; ++ci) {
+      const int cell = cj * cells.cells_x + ci;
+      const int cx = cells.first_x + ci * kCellSizePx, cy = cells.first_y + cj * kCellSizePx;
+      CellState& st = scratch.cells[cell];
+      // Pixels of the cell inside both the tile and the triangle's bounding box.
+      const CellMask valid = cell_rect_mask(cx, cy, std::max(rect.x0, t.min_x), std::max(rect.y0, t.min_y), x_end, y_end);
+      st.covered_any = cell_coverage(t, ctx.pattern, cx, cy, valid, st.covered);
+      if (!st.covered_any) continue;
+      scratch.touched.push_back(cell);
+      ++counters.cells_rasterized;
+      planes.at_cell(cx, cy, st.planes);
+      if (ctx.hiz_enabled) {
+        double lo, hi;
+        cell_depth_bounds(st.planes[2], cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
+                          std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), lo, hi);
+        if (scratch.hiz.rejects(cell, ctx.draw.raster.depth_compare, ctx.quantize_depth(lo),
+                                ctx.quantize_depth(hi))) {
+          ++counters.cells_hiz_rejected;
+          for (int s = 0; s < samples; ++s) st.passing[s] = 0;
+          if (!ctx.fragments) {  // nothing to record: count the cell's pixels and skip its quads
+            counters.fragments_depth_rejected += std::popcount(st.covered_any);
+            st.covered_any = 0;
+          }
+          continue;
+        }
+      }
+      // Depth at every sample position, then the depth test (and, for early Z, the write).
+      const int cols = std::min(cx + kCellSizePx, rect.x0 + rect.width) - std::max(cx, rect.x0);
+      const int rows = std::min(cy + kCellSizePx, rect.y0 + rect.height) - std::max(cy, rect.y0);
+      float* z_all = scratch.cell_depth.data() + static_cast<size_t>(cell) * kMaxSamples * kCellPixels;
+      bool wrote = false;
+      for (int s = 0; s < samples; ++s) {
+        float* z = z_all + s * kCellPixels;
+        // Without a depth attachment nothing reads the depth: every covered sample passes.
+        if (!ctx.has_depth || !st.covered[s]) {
+          st.passing[s] = st.covered[s];
+          continue;
+        }
+        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z);
+        if (ctx.depth_unorm_bits) {
+          for (int i = 0; i < kCellPixels; ++i) z[i] = ctx.quantize_depth(z[i]);
+        }
+        // A tile narrower than a cell (budget-reduced tiles) starts inside it at (lx0, ly0).
+        const int lx0 = std::max(cx, rect.x0) - cx, ly0 = std::max(cy, rect.y0) - cy;
+        float* stored = memory.depth_plane() + memory.index(cx + lx0 - rect.x0, cy + ly0 - rect.y0, s);
+        const int shift = ly0 * kCellSizePx + lx0;
+        const bool write_now = ctx.depth_write && !ctx.late_z;
+        if (samples == 1) {
+          st.passing[s] = depth_test_cell(ctx.draw.raster.depth_compare, ctx.depth_test, write_now,
+                                          z + shift, stored, memory.width(), cols, rows,
+                                          st.covered[s] >> shift) << shift;
+        } else {
+          CellMask pass = 0;
+          for (int ly = ly0; ly < ly0 + rows; ++ly) {
+            for (int lx = lx0; lx < lx0 + cols; ++lx) {
+              const int bit = ly * kCellSizePx + lx;
+              if (!((st.covered[s] >> bit) & 1u)) continue;
+              float& dst = memory.depth_plane()[memory.index(cx + lx - rect.x0, cy + ly - rect.y0, s)];
+              if (ctx.depth_test && !depth_compare_passes(ctx.draw.raster.depth_compare, z[bit], dst)) continue;
+              pass |= CellMask{1} << bit;
+              if (write_now) dst = z[bit];
+            }
+          }
+          st.passing[s] = pass;
+        }
+        wrote = wrote || (write_now && st.passing[s]);
+      }
+      if (wrote && ctx.hiz_tracked) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
+    }
+  }
+}
+
+// shade_quads for a draw without a fragment shader (shadow maps, depth pre-passes) when no
+// fragment accesses are recorded: nothing is shaded or written but depth, which early Z already
+// wrote, so only the counters remain, taken per cell rather than per quad: samples written are
+// the passing samples, and a pixel with a covered but no passing sample was rejected by depth
+// (what write_back and shade_quads count quad by quad).
+void count_unshaded_cells(const TriangleContext& ctx, const TileScratch& scratch,
+                          TileCounters& counters) {
+  for (const int cell : scratch.touched) {
+    const CellState& st = scratch.cells[cell];
+    if (!st.covered_any) continue;  // rejected whole by hierarchical Z (counted there)
+    CellMask passing_pixels = 0;
+    for (int s = 0; s < ctx.pattern.count; ++s) {
+      counters.samples_written += static_cast<uint64_t>(std::popcount(st.passing[s]));
+      passing_pixels |= st.passing[s];
+    }
+    counters.fragments_depth_rejected +=
+        static_cast<uint64_t>(std::popcount(st.covered_any & ~passing_pixels));
+  }
+}
+
+// Walks the triangle's quads in the tile's row-major order (the order the texture and IMR
+// models replay) and hands the surviving ones to the batcher.
+void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
+                 TileCounters& counters, TileScratch& scratch) {
+  const TriangleSetup& t = ctx.tri.setup;
+  const TileRect& rect = ctx.rect;
+  const int samples = ctx.pattern.count;
+  const int x_begin = std::max(rect.x0, t.min_x & ~1);
+  const int y_begin = std::max(rect.y0, t.min_y & ~1);
+  const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
+  const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
+  QuadBatcher& batcher = scratch.batcher;
+  batcher.begin(ctx, memory, counters, scratch.cells.data(), cells.cells_x, cells.first_x,
+                cells.first_y, scratch.cell_depth.data());
+  const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
+  const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
+  for (int qy = y_begin; qy < y_end; qy += 2) {
+    const int cj = (qy - cells.first_y) / kCellSizePx;
+    const int ly = qy & (kCellSizePx - 1);
+    for (int ci = ci_begin; ci <= ci_end; ++ci) {
+      const int cell = cj * cells.cells_x + ci;
+      const CellState& st = scratch.cells[cell];
+      // The quads of this cell row with a covered lane, as bits at their even columns: visited
+      // in ascending x (the tile's row-major quad order) without stepping over empty quads.
+      // Covered bits lie inside the tile and the bounding box (rasterize_cells' valid mask).
+      const uint32_t rows = static_cast<uint32_t>(st.covered_any >> (ly * kCellSizePx)) & 0xFFFFu;
+      const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
+      uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
+      const int cx = cells.first_x + ci * kCellSizePx;
+      while (quads) {
+        const int lx = std::countr_zero(quads);
+        quads &= quads - 1;
+        const int qx = cx + lx;
+        QuadCoverage coverage = 0, passing = 0;
+        for (int s = 0; s < samples; ++s) {
+          coverage |= spread_lanes(quad_lanes(st.covered[s], lx, ly), s);
+          passing |= spread_lanes(quad_lanes(st.passing[s], lx, ly), s);
+        }
+        if (!ctx.late_z) {
+          counters.fragments_depth_rejected +=
+              lane_count(lanes_of(coverage) & ~lanes_of(passing));
+          // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
+          if (!passing && !ctx.fragments) continue;
+        }
+        batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
+      }
+    }
+  }
+  batcher.flush();
+}
+
+}  // namespace
+
+void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
+                  TileMemory& memory, TileCounters& counters, TileTrace& trace,
+                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  bool hierarchical_z) {
+  trace.texture_granules = GranuleRange{&texel_buffer, texel_buffer.size(), texel_buffer.size()};
+  const TexelTraceScope texel_trace(&texel_buffer);
+  const TileGrid& grid = params.grid;
+  TileRect rect;
+  rect.x0 = (tile_index % grid.tiles_x()) * grid.tile_width_px;
+  rect.y0 = (tile_index / grid.tiles_x()) * grid.tile_height_px;
+  rect.width = std::min(grid.tile_width_px, grid.width_px - rect.x0);
+  rect.height = std::min(grid.tile_height_px, grid.height_px - rect.y0);
+
+  load_tile(pass, rect, memory);
+  const uint32_t begin = params.tile_offsets[tile_index];
+  const uint32_t end = params.tile_offsets[tile_index + 1];
+  if (begin != end) ++counters.tiles_executed;
+
+  TileScratch& scratch = tile_scratch();
+  const TileCells cells(rect);
+  scratch.cells.resize(cells.count());
+  scratch.cell_depth.resize(static_cast<size_t>(cells.count()) * kMaxSamples * kCellPixels);
+  const bool has_depth = pass.depth_index >= 0;
+  if (has_depth && begin != end) {
+    scratch.hiz.prepare(cells.cells_x, cells.cells_y);
+    for (int c = 0; c < cells.count(); ++c) refresh_hiz(scratch.hiz, cells, c, rect, memory);
+  }
+  const SamplePattern& pattern = *standard_sample_pattern(pass.samples);
+  for (uint32_t e = begin; e < end; ++e) {
+    const uint32_t ref = params.tile_entries[e];
+    const BinnedTriangle& tri = params.triangle(ref);
+    const SubpassDesc& subpass = pass.subpasses[tri.subpass];
+    const DrawCall& draw = subpass.draws[tri.draw];
+    const int n = draw.vertex_shader->varying_count();
+    counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
+                                     3u * post_transform_vertex_bytes(n);
+    const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
+    TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
+                              rect, &fetch, ref,
+                              record_fragment_accesses ? &trace.fragments : nullptr);
+    ctx.hiz_enabled = ctx.hiz_enabled && hierarchical_z;
+    scratch.touched.clear();
+    rasterize_cells(ctx, cells, memory, counters, scratch);
+    if (scratch.touched.empty()) continue;
+    if (!draw.fragment_shader && !ctx.fragments) {
+      count_unshaded_cells(ctx, scratch, counters);
+    } else {
+      shade_quads(ctx, cells, memory, counters, scratch);
+    }
+    // Late-Z draws wrote depth after shading: bring their cells' bounds up to date.
+    if (ctx.late_z && ctx.depth_write && ctx.hiz_tracked) {
+      for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
+    }
+  }
+  store_tile(pass, rect, memory);
+  trace.texture_granules.end = texel_buffer.size();
+}
+
+}  // namespace ontile

@@ -1,0 +1,24 @@
+// Runs one screen tile of a render pass: loads its attachments into tile memory, replays the
+// tile's primitive list through rasterization, depth test, shading and blending, then stores.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "tiler/detail/parameter_buffer.h"
+#include "tiler/render_pass.h"
+#include "tiler/detail/tile_memory.h"
+#include "tiler/detail/tile_trace.h"
+
+namespace ontile {
+
+// Texture fetches are traced: appended to texel_buffer (the running thread's, shared with its
+// other tiles), and trace.texture_granules names the part this tile appended. With
+// record_fragment_accesses every fragment's colour/depth accesses go to trace.fragments (for
+// the IMR model). hierarchical_z lets early-Z draws skip cells proven occluded (same results,
+// less work).
+void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
+                  TileMemory& memory, TileCounters& counters, TileTrace& trace,
+                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  bool hierarchical_z = true);
+
+}  // namespace ontile

@@ -1,0 +1,156 @@
+// Tile load and store (see tile_load_store.h). Byte counting is done analytically by the pass
+// executor; this file moves the data. A tile row (its pixels, samples adjacent) is contiguous in
+// tile memory and in the surface, so loads and stores convert whole rows (pixel_format.h row
+// functions, SIMD for the hot formats) and clears are fills of one quantised value.
+#include "tiler/detail/tile_load_store.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace ontile {
+namespace {
+
+// Widest tile row in values: 64 px x 8 samples (the largest tile and sample count).
+constexpr int kMaxRowValues = 64 * 8;
+
+// Rows wider than the stack buffer (never, with today's tile and sample limits) take the
+// per-pixel path.
+bool row_fits(const TileRect& rect, int samples) { return rect.width * samples <= kMaxRowValues; }
+
+void load_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileRect& rect,
+                          int samples, glm::vec4* color, float* depth, const TileMemory& memory) {
+  const int n = rect.width * samples;
+  glm::vec4 row[kMaxRowValues];
+  for (int ly = 0; ly < rect.height; ++ly) {
+    const size_t first = memory.index(0, ly, 0);
+    const uint8_t* src = desc.surface->pixel_bytes(rect.x0, rect.y0 + ly);
+    if (!is_depth) {
+      decode_pixels(desc.format, src, n, color + first);
+      continue;
+    }
+    if (desc.format == PixelFormat::D32_FLOAT) {  // the stored bytes are the float's
+      std::memcpy(depth + first, src, sizeof(float) * static_cast<size_t>(n));
+      continue;
+    }
+    decode_pixels(desc.format, src, n, row);
+    for (int i = 0; i < n; ++i) depth[first + i] = row[i].x;
+  }
+}
+
+// Stores and/or resolves one attachment row by row: the samples' row encoded as it is, and each
+// pixel's samples averaged in sample order (Vulkan's resolve for float/UNORM formats; the sum
+// starts at 0 and is divided by the sample count, as the per-pixel path does) and encoded as a row.
+void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileRect& rect,
+                           int samples, const TileMemory& memory, int attachment, bool store,
+                           bool resolve) {
+  const int n = rect.width * samples;
+  glm::vec4 row[kMaxRowValues];
+  glm::vec4 resolved[kMaxRowValues];
+  for (int ly = 0; ly < rect.height; ++ly) {
+    const size_t first = memory.index(0, ly, 0);
+    const glm::vec4* values = memory.color_plane(attachment) + first;
+    if (is_depth && desc.format == PixelFormat::D32_FLOAT && store && !resolve) {
+      std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly), memory.depth_plane() + first,
+                  sizeof(float) * static_cast<size_t>(n));  // the stored bytes are the float's
+      continue;
+    }
+    if (is_depth) {
+      for (int i = 0; i < n; ++i) row[i] = glm::vec4(memory.depth_plane()[first + i], 0.0f, 0.0f, 1.0f);
+      values = row;
+    }
+    if (store) {
+      encode_pixels(desc.surface->format(), values, n,
+                    desc.surface->pixel_bytes(rect.x0, rect.y0 + ly));
+    }
+    if (!resolve) continue;
+    for (int lx = 0; lx < rect.width; ++lx) {
+      glm::vec4 sum(0.0f);
+      for (int s = 0; s < samples; ++s) sum += values[lx * samples + s];
+      resolved[lx] = sum / static_cast<float>(samples);
+    }
+    encode_pixels(desc.resolve_surface->format(), resolved, rect.width,
+                  desc.resolve_surface->pixel_bytes(rect.x0, rect.y0 + ly));
+  }
+}
+
+}  // namespace
+
+void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& memory) {
+  const int samples = memory.samples();
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    const AttachmentDesc& desc = pass.attachments[a];
+    const bool is_depth = static_cast<int>(a) == pass.depth_index;
+    glm::vec4* color = is_depth ? nullptr : memory.color_plane(static_cast<int>(a));
+    float* depth = memory.depth_plane();
+    // DontCare leaves undefined contents; we define them as the clear value so that images
+    // stay deterministic (a pipeline that reads them has a bug the validation cannot see).
+    const bool from_memory = desc.load == LoadAction::Load && desc.surface != nullptr;
+    if (!from_memory) {
+      const glm::vec4 v = quantize_pixel(desc.format, desc.clear_value);
+      const size_t n = static_cast<size_t>(memory.width()) * memory.height() * samples;
+      if (is_depth) {
+        std::fill_n(depth, n, v.x);
+      } else {
+        std::fill_n(color, n, v);
+      }
+      continue;
+    }
+    if (desc.surface->samples() == samples && row_fits(rect, samples)) {
+      load_attachment_rows(desc, is_depth, rect, samples, color, depth, memory);
+      continue;
+    }
+    for (int ly = 0; ly < rect.height; ++ly) {
+      for (int lx = 0; lx < rect.width; ++lx) {
+        for (int s = 0; s < samples; ++s) {
+          const size_t i = memory.index(lx, ly, s);
+          const glm::vec4 v = desc.surface->read(rect.x0 + lx, rect.y0 + ly, s);
+          if (is_depth) {
+            depth[i] = v.x;
+          } else {
+            color[i] = v;
+          }
+        }
+      }
+    }
+  }
+}
+
+void store_tile(const RenderPassDesc& pass, const TileRect& rect, const TileMemory& memory) {
+  const int samples = memory.samples();
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    const AttachmentDesc& desc = pass.attachments[a];
+    const bool is_depth = static_cast<int>(a) == pass.depth_index;
+    const bool store = (desc.store == StoreAction::Store ||
+                        desc.store == StoreAction::StoreAndResolve) && desc.surface != nullptr;
+    const bool resolve = (desc.store == StoreAction::Resolve ||
+                          desc.store == StoreAction::StoreAndResolve) &&
+                         desc.resolve_surface != nullptr;
+    if (!store && !resolve) continue;
+    if ((!store || desc.surface->samples() == samples) &&
+        (!resolve || desc.resolve_surface->samples() == 1) && row_fits(rect, samples)) {
+      store_attachment_rows(desc, is_depth, rect, samples, memory, static_cast<int>(a), store,
+                            resolve);
+      continue;
+    }
+    for (int ly = 0; ly < rect.height; ++ly) {
+      for (int lx = 0; lx < rect.width; ++lx) {
+        glm::vec4 sum(0.0f);
+        for (int s = 0; s < samples; ++s) {
+          const size_t i = memory.index(lx, ly, s);
+          const glm::vec4 v = is_depth ? glm::vec4(memory.depth_plane()[i], 0.0f, 0.0f, 1.0f)
+                                       : memory.color_plane(static_cast<int>(a))[i];
+          if (store) desc.surface->write(rect.x0 + lx, rect.y0 + ly, s, v);
+          sum += v;
+        }
+        // Resolve averages the samples (Vulkan's resolve for float/UNORM formats), summed in a
+        // fixed sample order so the result is deterministic.
+        if (resolve) {
+          desc.resolve_surface->write(rect.x0 + lx, rect.y0 + ly, 0,
+                                      sum / static_cast<float>(samples));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace ontile

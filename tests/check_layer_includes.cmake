@@ -1,0 +1,36 @@
+# Proves that a layer's include paths enforce the layering (cmake/layers.cmake): a source in the
+# layer compiles with an include of a layer below it and fails with one from a layer above.
+# Run by ctest: cmake -DCOMPILER=... -DINCLUDES=a|b -DDEFINES=x|y -DALLOWED=h -DFORBIDDEN=h
+#   -DWORK=dir -P check_layer_includes.cmake
+string(REPLACE "|" ";" include_dirs "${INCLUDES}")
+string(REPLACE "|" ";" defines "${DEFINES}")
+set(flags -std=c++20 -fsyntax-only)
+foreach(dir IN LISTS include_dirs)
+  list(APPEND flags "-I${dir}")
+endforeach()
+foreach(def IN LISTS defines)
+  list(APPEND flags "-D${def}")
+endforeach()
+file(MAKE_DIRECTORY "${WORK}")
+
+function(compile_probe header result_var error_var)
+  string(MAKE_C_IDENTIFIER "${header}" id)
+  set(probe "${WORK}/probe_${id}.cpp")
+  file(WRITE "${probe}" "#include \"${header}\"\nint main() { return 0; }\n")
+  execute_process(COMMAND "${COMPILER}" ${flags} "${probe}" RESULT_VARIABLE result ERROR_VARIABLE error)
+  set(${result_var} "${result}" PARENT_SCOPE)
+  set(${error_var} "${error}" PARENT_SCOPE)
+endfunction()
+
+compile_probe("${ALLOWED}" allowed_result allowed_error)
+if(NOT allowed_result EQUAL 0)
+  message(FATAL_ERROR "including ${ALLOWED} should compile in this layer:\n${allowed_error}")
+endif()
+compile_probe("${FORBIDDEN}" forbidden_result forbidden_error)
+if(forbidden_result EQUAL 0)
+  message(FATAL_ERROR "including ${FORBIDDEN} compiled in this layer: the layering is not enforced")
+endif()
+if(NOT forbidden_error MATCHES "No such file or directory")
+  message(FATAL_ERROR "including ${FORBIDDEN} failed for another reason than a missing header:\n${forbidden_error}")
+endif()
+message(STATUS "${ALLOWED} compiles; ${FORBIDDEN} is out of reach")
