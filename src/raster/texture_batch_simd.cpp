@@ -73,7 +73,7 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
       for (int c = 0; c < 4; ++c) {
         const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
         const auto value = hn::GatherIndex(df, table, bytes[c]);
-        hn::Store(hn::IfThenElse(on, value, hn::Load(df, colour[c] + f)), df, colour[c] + f);
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
       }
     }
     return;
@@ -81,11 +81,11 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
   if (view.texels32f) {
     for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
       const auto on = float_lanes_of(df, active, f);
-      const VI texel = hn::Add(hn::Mul(hn::Load(di, y + f), width), hn::Load(di, x + f));
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
       const VI first = hn::ShiftLeft<2>(texel);
       for (int c = 0; c < 4; ++c) {
         const auto value = hn::GatherIndex(df, view.texels32f, hn::Add(first, hn::Set(di, c)));
-        hn::Store(hn::IfThenElse(on, value, hn::Load(df, colour[c] + f)), df, colour[c] + f);
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
       }
     }
     return;
