@@ -1,13 +1,12 @@
-// The Sobel pass's batch trace (see sobel_trace_kernel.h), compiled once per
-// SIMD target by Highway's foreach_target: integer address arithmetic and table lookups only,
-// so every target records the same granules and reads the same texel values.
+// The Sobel pass's batch trace (see sobel_trace_kernel.h), compiled once per SIMD target by
+// Highway's foreach_target: integer address arithmetic only, so every target records the same
+// granules.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shaders_cpp/toon/sobel_trace_kernel.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include <bit>
-#include <cstring>
 
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
 
