@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "raster/texture_batch_simd.h"
 #include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
@@ -23,6 +24,12 @@ class CopyShader final : public FragmentShader {
   CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
       : source_(std::move(source)), sampler_(sampler) {}
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
+    if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
+                             batch.varyings[FullScreenVertexShader::kUv + 1],
+                             batch.fragment_count(), out.color[0])) {
+      return;
+    }
     for (int q = 0; q < batch.quad_count; ++q) {
       glm::vec2 uv[kQuadLanes];
       batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "raster/texture_batch_simd.h"
 #include "shaders_cpp/full_screen.h"
 #include "shaders_cpp/toon/sobel_tap_trace.h"
 #include "util/error.h"
@@ -142,6 +143,23 @@ SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
   edge_test_.normal_threshold = p_.normal_threshold;
   edge_test_.view_ray_scale = p_.view_ray_scale;
   edge_test_.min_grazing_cosine = p_.min_grazing_cosine;
+  trace_planes_.depth = sobel::TracePlane(depth_);
+  trace_planes_.color = sobel::TracePlane(color_);
+  trace_planes_.has_normal = p_.normal != nullptr;
+  if (p_.normal) trace_planes_.normal = sobel::TracePlane(normal_);
+  trace_planes_.has_border = p_.border != nullptr;
+  if (p_.border) trace_planes_.border = sobel::TracePlane(border_);
+  batch_lanes_ = sobel::BatchTracePlanes::fits_lanes(depth_, color_);
+}
+
+glm::vec4 SobelEdgeShader::edge_colour(glm::vec4 scene, int border_x, int border_y,
+                                       sobel::TapTrace* trace) const {
+  glm::vec4 border = p_.default_border_color;
+  if (p_.border) {
+    if (trace) trace->border(border_x, border_y);
+    border = border_.load(border_x, border_y);
+  }
+  return glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
 }
 
 glm::vec4 SobelEdgeShader::compose(const int tx[kTapsPerAxis], const int ty[kTapsPerAxis],
@@ -149,13 +167,8 @@ glm::vec4 SobelEdgeShader::compose(const int tx[kTapsPerAxis], const int ty[kTap
                                    sobel::TapTrace& trace) const {
   const glm::vec4 scene = color_.load(color_x, color_y);
   if (!edge) return scene;
-  glm::vec4 border = p_.default_border_color;
-  if (p_.border) {
-    const int x = tx[nearest_tap % kTapsPerAxis], y = ty[nearest_tap / kTapsPerAxis];
-    trace.border(x, y);
-    border = border_.load(x, y);
-  }
-  return glm::vec4(glm::mix(glm::vec3(scene), glm::vec3(border), border.w), scene.w);
+  return edge_colour(scene, tx[nearest_tap % kTapsPerAxis], ty[nearest_tap / kTapsPerAxis],
+                     &trace);
 }
 
 glm::vec4 SobelEdgeShader::shade_one(glm::vec2 uv, sobel::TapTrace& trace) const {
@@ -226,6 +239,18 @@ void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count,
                      grid);
   sobel::FragmentEdges edges;
   sobel::find_edges(u, v, count, taps, grid, edge_test_, edges);
+  if (batch_lanes_) {
+    trace.batch(trace_planes_, taps, edges, count, active);
+    load_texels(color_, taps.color_x, taps.color_y, count, active, colour);
+    for (uint64_t rest = active & edges.edge; rest != 0; rest &= rest - 1) {
+      const int f = std::countr_zero(rest);
+      const int tap = edges.nearest_tap[f];
+      const glm::vec4 scene(colour[0][f], colour[1][f], colour[2][f], colour[3][f]);
+      store(f, edge_colour(scene, taps.x[tap % kTapsPerAxis][f], taps.y[tap / kTapsPerAxis][f],
+                           nullptr));
+    }
+    return;
+  }
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const int tx[kTapsPerAxis] = {taps.x[0][f], taps.x[1][f], taps.x[2][f]};

@@ -9,6 +9,7 @@
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
+#include "shaders_cpp/toon/sobel_trace_kernel.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 
 namespace ontile {
@@ -118,6 +119,10 @@ class SobelEdgeShader final : public FragmentShader {
                     int color_x, int color_y, bool edge, int nearest_tap,
                     sobel::TapTrace& trace) const;
 
+  // On an edge: the scene colour mixed towards the border colour of the nearest tap (read, and
+  // recorded when trace is not null) or the default border colour.
+  glm::vec4 edge_colour(glm::vec4 scene, int border_x, int border_y, sobel::TapTrace* trace) const;
+
   // |cos| of the angle between the centre's normal and the view ray at uv, at least
   // min_grazing_cosine (also for a zero normal: an uncovered background pixel).
   float grazing_cosine(glm::vec3 view_normal, glm::vec2 uv) const;
@@ -127,6 +132,8 @@ class SobelEdgeShader final : public FragmentShader {
   sobel::TapLayout layout_;
   sobel::DepthDecode depth_decode_;
   sobel::EdgeTest edge_test_;
+  sobel::BatchTracePlanes trace_planes_;
+  bool batch_lanes_ = false;  // trace and colour reads of grid batches on SIMD lanes
 };
 
 }  // namespace ontile

@@ -10,6 +10,7 @@
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
+#include "shaders_cpp/toon/sobel_trace_kernel.h"
 
 namespace ontile::sobel {
 
@@ -71,6 +72,14 @@ class TapTrace {
     record(color_.address(color_x, color_y));
     last_granule_ = last;
     count_ = count;
+  }
+  // The reads of a whole batch's fragments whose bit is set in active, borders included, in
+  // the order fragment() and border() would record them (trace_batch, on SIMD lanes).
+  void batch(const BatchTracePlanes& planes, const FragmentTaps& taps, const FragmentEdges& edges,
+             int fragment_count, uint64_t active) {
+    if (!sink_) return;
+    count_ += trace_batch(planes, taps, edges, fragment_count, active, granules_.data() + count_,
+                          last_granule_);
   }
   // The border read of a fragment on an edge, at its nearest tap's texel.
   void border(int x, int y) {

@@ -54,15 +54,11 @@ QuadBatcher::QuadBatcher() : batch_(std::make_unique<FragmentBatch>()) {
 }
 
 void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
-                        const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
-                        const float* cell_depth) {
+                        const CellState* cells, const float* cell_depth) {
   ctx_ = &ctx;
   memory_ = &memory;
   counters_ = &counters;
   cells_ = cells;
-  cells_x_ = cells_x;
-  first_cell_x_ = first_cell_x;
-  first_cell_y_ = first_cell_y;
   cell_depth_ = cell_depth;
   queued_ = 0;
   opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
@@ -99,19 +95,24 @@ void QuadBatcher::shade_invocation(int inv) {
     slot_[inv][q] = lanes ? count : -1;
     if (!lanes) continue;
     const CellState& cell = cells_[quad.cell];
-    const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
-    const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
     b.quad_x_px[count] = quad.qx;
     b.quad_y_px[count] = quad.qy;
     b.lane_mask[count] = lanes;
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      const int f = count * kQuadLanes + lane;
-      fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
-      fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
-      l1_[f] = cell.planes[0].origin;
-      l2_[f] = cell.planes[1].origin;
-      z_[f] = cell.planes[2].origin;
-    }
+    // Lane (i, j) of the quad sits at (qx + i - cx, qy + j - cy) from the cell's origin.
+    const int f = count * kQuadLanes;
+    const float x0 = static_cast<float>(quad.qx - quad.cell_x) + off_x;
+    const float x1 = static_cast<float>(quad.qx + 1 - quad.cell_x) + off_x;
+    const float y0 = static_cast<float>(quad.qy - quad.cell_y) + off_y;
+    const float y1 = static_cast<float>(quad.qy + 1 - quad.cell_y) + off_y;
+    const float l1 = cell.planes[0].origin, l2 = cell.planes[1].origin, z = cell.planes[2].origin;
+    const float quad_x[kQuadLanes] = {x0, x1, x0, x1}, quad_y[kQuadLanes] = {y0, y0, y1, y1};
+    const float quad_l1[kQuadLanes] = {l1, l1, l1, l1}, quad_l2[kQuadLanes] = {l2, l2, l2, l2};
+    const float quad_z[kQuadLanes] = {z, z, z, z};
+    std::memcpy(fx_ + f, quad_x, sizeof quad_x);
+    std::memcpy(fy_ + f, quad_y, sizeof quad_y);
+    std::memcpy(l1_ + f, quad_l1, sizeof quad_l1);
+    std::memcpy(l2_ + f, quad_l2, sizeof quad_l2);
+    std::memcpy(z_ + f, quad_z, sizeof quad_z);
     ++count;
   }
   if (count == 0) return;
@@ -162,6 +163,7 @@ void QuadBatcher::shade_invocation(int inv) {
     if (slot < 0) continue;
     counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
     const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
+    if (!discarded) continue;
     for (int lane = 0; lane < kQuadLanes; ++lane) {
       if (!((discarded >> lane) & 1u)) continue;
       const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
@@ -211,8 +213,7 @@ void QuadBatcher::write_back(int q) {
   if (!passing) return;
   const int samples = ctx.pattern.count;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
-  const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
-  const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
+  const int cx = quad.cell_x, cy = quad.cell_y;
   const float* z = cell_depth_ + static_cast<size_t>(quad.cell) * kMaxSamples * kCellPixels;
   const bool late_depth_write = ctx.late_z && ctx.depth_write;
   float* depth_plane = memory_->depth_plane();

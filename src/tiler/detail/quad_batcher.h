@@ -76,6 +76,7 @@ struct CellState {
 
 struct QueuedQuad {
   int qx, qy, cell;
+  int cell_x, cell_y;  // the cell's top-left pixel
   QuadCoverage coverage, passing;
 };
 
@@ -84,8 +85,7 @@ class QuadBatcher {
   QuadBatcher();
   // Starts a triangle: cells and cell_depth are the tile's per-cell state (see tile_executor).
   void begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
-             const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
-             const float* cell_depth);
+             const CellState* cells, const float* cell_depth);
   void add(const QueuedQuad& quad) {
     queue_[queued_++] = quad;
     if (queued_ == kBatchQuads) flush();
@@ -101,7 +101,6 @@ class QuadBatcher {
   TileMemory* memory_ = nullptr;
   TileCounters* counters_ = nullptr;
   const CellState* cells_ = nullptr;
-  int cells_x_ = 0, first_cell_x_ = 0, first_cell_y_ = 0;
   const float* cell_depth_ = nullptr;
   bool opaque_writes_ = false;  // blending is a plain overwrite: outputs are quantised per batch
   QueuedQuad queue_[kBatchQuads];

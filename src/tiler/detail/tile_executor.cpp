@@ -4,6 +4,7 @@
 // quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
 #include "tiler/detail/tile_executor.h"
 
+#include <atomic>
 #include <bit>
 
 #include "raster/cell_raster.h"
@@ -40,6 +41,12 @@ class TileFetch final : public FramebufferFetch {
   const std::vector<int>& inputs_;
   int depth_index_;
 };
+
+std::atomic<bool> whole_quad_rows{true};
+
+// Coverage (and passing) of a quad whose 4 lanes hold sample 0, at one sample per pixel.
+constexpr QuadCoverage kWholeQuadSample0 = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
+                                           (1u << (3 * kMaxSamples));
 
 // The 4 lanes of the quad whose top-left pixel is bit (ly * 8 + lx) of a cell mask.
 inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
@@ -210,13 +217,14 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
   const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
   const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
   QuadBatcher& batcher = scratch.batcher;
-  batcher.begin(ctx, memory, counters, scratch.cells.data(), cells.cells_x, cells.first_x,
-                cells.first_y, scratch.cell_depth.data());
+  batcher.begin(ctx, memory, counters, scratch.cells.data(), scratch.cell_depth.data());
   const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
   const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
+  const bool whole_rows = samples == 1 && whole_quad_rows.load(std::memory_order_relaxed);
   for (int qy = y_begin; qy < y_end; qy += 2) {
     const int cj = (qy - cells.first_y) / kCellSizePx;
     const int ly = qy & (kCellSizePx - 1);
+    const int cy = cells.first_y + cj * kCellSizePx;
     for (int ci = ci_begin; ci <= ci_end; ++ci) {
       const int cell = cj * cells.cells_x + ci;
       const CellState& st = scratch.cells[cell];
@@ -224,9 +232,18 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
       // in ascending x (the tile's row-major quad order) without stepping over empty quads.
       // Covered bits lie inside the tile and the bounding box (rasterize_cells' valid mask).
       const uint32_t rows = static_cast<uint32_t>(st.covered_any >> (ly * kCellSizePx)) & 0xFFFFu;
+      const int cx = cells.first_x + ci * kCellSizePx;
+      if (whole_rows && rows == 0xFFFFu &&
+          (static_cast<uint32_t>(st.passing[0] >> (ly * kCellSizePx)) & 0xFFFFu) == 0xFFFFu) {
+        // Every quad of the row covers and passes its 4 lanes: what the walk below queues
+        // (coverage = passing = sample 0 of each lane, nothing rejected by depth).
+        for (int lx = 0; lx < kCellSizePx; lx += 2) {
+          batcher.add(QueuedQuad{cx + lx, qy, cell, cx, cy, kWholeQuadSample0, kWholeQuadSample0});
+        }
+        continue;
+      }
       const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
       uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
-      const int cx = cells.first_x + ci * kCellSizePx;
       while (quads) {
         const int lx = std::countr_zero(quads);
         quads &= quads - 1;
@@ -242,7 +259,7 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
           // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
           if (!passing && !ctx.fragments) continue;
         }
-        batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
+        batcher.add(QueuedQuad{qx, qy, cell, cx, cy, coverage, passing});
       }
     }
   }
@@ -250,6 +267,8 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
 }
 
 }  // namespace
+
+void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,

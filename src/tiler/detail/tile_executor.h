@@ -21,4 +21,10 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
                   std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
                   bool hierarchical_z = true);
 
+// Whole covered quad rows (both pixel rows of a cell's quad row covered and passing at one
+// sample per pixel: full-screen triangles, large triangles) are queued as whole quads without
+// per-quad coverage work. On by default; tests turn it off to compare with the per-quad walk
+// (same images and counters). Set between frames only.
+void set_whole_quad_rows(bool enabled);
+
 }  // namespace ontile

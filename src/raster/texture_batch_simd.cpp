@@ -1,0 +1,156 @@
+// Batch texel reads on SIMD lanes (see texture_batch_simd.h), compiled once per SIMD target by
+// Highway's foreach_target and chosen at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/texture_batch_simd.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <bit>
+#include <cstring>
+
+#include "raster/texel_trace.h"
+#include "raster/texture_batch_simd.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;
+using DI = hn::RebindToSigned<DF>;
+using VI = hn::Vec<DI>;
+
+// Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
+constexpr float kMaxExactTexelCoord = 16777216.0f;
+// Bit i for lane i (x86 float vectors hold at most 16 lanes).
+alignas(64) constexpr int32_t kLaneBit32[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
+                                                1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
+                                                1 << 12, 1 << 13, 1 << 14, 1 << 15};
+
+// Mask of the float lanes of fragments f.. whose bit is set in `bits`.
+HWY_INLINE hn::Mask<DF> float_lanes_of(DF df, uint64_t bits, size_t f) {
+  const DI di;
+  const VI word = hn::Set(di, static_cast<int32_t>((bits >> f) & 0xFFFFu));
+  return hn::RebindMask(df, hn::Ne(hn::And(word, hn::LoadU(di, kLaneBit32)), hn::Zero(di)));
+}
+
+void NearestClampedTexelsKernel(const float* coord, int count, int size, int32_t* out) {
+  const DF df;
+  const DI di;
+  const auto limit = hn::Set(df, kMaxExactTexelCoord);
+  const auto scale = hn::Set(df, static_cast<float>(size));
+  const VI last = hn::Set(di, size - 1);
+  for (size_t f = 0; f < static_cast<size_t>(count); f += hn::Lanes(df)) {
+    auto u = hn::LoadU(df, coord + f);
+    u = hn::IfThenElseZero(hn::IsFinite(u), u);
+    u = hn::IfThenElse(hn::Lt(hn::Abs(u), limit), u, hn::CopySign(limit, u));
+    auto x = hn::Mul(u, scale);
+    x = hn::IfThenElse(hn::Lt(hn::Abs(x), limit), x, hn::CopySign(limit, x));
+    const VI i = hn::ConvertTo(di, hn::Floor(x));  // |x| <= 2^24: exact
+    hn::StoreU(hn::Min(hn::Max(i, hn::Zero(di)), last), di, out + f);
+  }
+}
+
+void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const int32_t* y,
+                      int count, uint64_t active, float (&colour)[4][kBatchFragments]) {
+  const DF df;
+  const DI di;
+  const size_t n = hn::Lanes(df);
+  const VI width = hn::Set(di, view.width);
+  if (view.texels8) {
+    // 8-bit RGBA: the texel's bytes through the decode tables, as TexelView::load.
+    alignas(64) int32_t packed[kBatchFragments];
+    for (int f = 0; f < count; ++f) {
+      const size_t texel = static_cast<size_t>(y[f]) * static_cast<size_t>(view.width) + x[f];
+      std::memcpy(&packed[f], view.texels8 + texel * 4, 4);
+    }
+    const VI byte = hn::Set(di, 0xFF);
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI p = hn::Load(di, packed + f);
+      const VI bytes[4] = {hn::And(p, byte), hn::And(hn::ShiftRight<8>(p), byte),
+                           hn::And(hn::ShiftRight<16>(p), byte), hn::And(hn::ShiftRight<24>(p), byte)};
+      for (int c = 0; c < 4; ++c) {
+        const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
+        const auto value = hn::GatherIndex(df, table, bytes[c]);
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
+  if (view.texels32f) {
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const VI first = hn::ShiftLeft<2>(texel);
+      for (int c = 0; c < 4; ++c) {
+        const auto value = hn::GatherIndex(df, view.texels32f, hn::Add(first, hn::Set(di, c)));
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
+  for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+    const int f = std::countr_zero(rest);
+    const glm::vec4 texel = view.load(x[f], y[f]);
+    for (int c = 0; c < 4; ++c) colour[c][f] = texel[c];
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile {
+
+HWY_EXPORT(NearestClampedTexelsKernel);
+HWY_EXPORT(LoadTexelsKernel);
+
+void nearest_clamped_texels(const float* coord, int count, int size, int32_t* out) {
+  HWY_DYNAMIC_DISPATCH(NearestClampedTexelsKernel)(coord, count, size, out);
+}
+
+void load_texels(const Texture2D::TexelView& view, const int32_t* x, const int32_t* y, int count,
+                 uint64_t active, float (&colour)[4][kBatchFragments]) {
+  HWY_DYNAMIC_DISPATCH(LoadTexelsKernel)(view, x, y, count, active, colour);
+}
+
+bool sample_batch_nearest(const Texture2D& texture, const SamplerDesc& sampler, const float* u,
+                          const float* v, int fragment_count, float (&out)[4][kBatchFragments]) {
+  // sample_quad_lanes' one-filter, one-level case (texture.cpp), with the clamp-to-edge wrap.
+  if (sampler.mag_filter != FilterMode::Nearest || sampler.min_filter != FilterMode::Nearest ||
+      (sampler.mipmap_mode != MipmapMode::None && texture.level_count() != 1) ||
+      sampler.wrap_u != WrapMode::ClampToEdge || sampler.wrap_v != WrapMode::ClampToEdge) {
+    return false;
+  }
+  const Texture2D::TexelView view = texture.texel_view(0);
+  // Lanes index float channels as 32-bit integers (4 * texel).
+  if (int64_t{view.width} * view.height >= (int64_t{1} << 29)) return false;
+  const int padded = (fragment_count + 15) & ~15;
+  alignas(64) int32_t x[kBatchFragments], y[kBatchFragments];
+  nearest_clamped_texels(u, padded, view.width, x);
+  nearest_clamped_texels(v, padded, view.height, y);
+  if (std::vector<uint64_t>* sink = texel_trace_detail::sink) {
+    // record_texel_address per fragment: a granule that repeats the one before is dropped.
+    uint64_t granules[kBatchFragments];
+    uint64_t last = texel_trace_detail::last_granule;
+    int count = 0;
+    for (int f = 0; f < fragment_count; ++f) {
+      const uint64_t texel = static_cast<uint64_t>(y[f]) * static_cast<uint64_t>(view.width) +
+                             static_cast<uint64_t>(x[f]);
+      const uint64_t granule = (view.address + texel * view.memory_bytes_per_texel) >> 6;
+      granules[count] = granule;
+      count += granule != last;
+      last = granule;
+    }
+    sink->insert(sink->end(), granules, granules + count);
+    texel_trace_detail::last_granule = last;
+  }
+  const uint64_t all = padded >= 64 ? ~uint64_t{0} : (uint64_t{1} << padded) - 1;
+  load_texels(view, x, y, padded, all, out);
+  return true;
+}
+
+}  // namespace ontile
+#endif  // HWY_ONCE

@@ -1,0 +1,130 @@
+// sample_batch_nearest (raster/texture_batch_simd.h) against Texture2D::sample_quad quad by quad:
+// the same values bit for bit and the same texel trace, for 8-bit, sRGB, float and surface-view
+// textures, uvs at centres, anywhere, on texel edges and non-finite, on every SIMD target.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "raster/cell_raster.h"
+#include "raster/texel_trace.h"
+#include "raster/texture.h"
+#include "raster/texture_batch_simd.h"
+
+namespace ontile {
+namespace {
+
+struct AutomaticTargetOnExit {
+  ~AutomaticTargetOnExit() { force_simd_target(""); }
+};
+
+SamplerDesc nearest_clamp() {
+  SamplerDesc s;
+  s.mag_filter = s.min_filter = FilterMode::Nearest;
+  s.mipmap_mode = MipmapMode::None;
+  s.wrap_u = s.wrap_v = WrapMode::ClampToEdge;
+  return s;
+}
+
+TEST(TextureBatch, NearestBatchesMatchSampleQuadBitsAndTrace) {
+  std::mt19937 rng(4242);
+  constexpr int kW = 45, kH = 29;
+  std::vector<uint8_t> bytes(static_cast<size_t>(kW) * kH * 4);
+  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
+  std::vector<float> floats(static_cast<size_t>(kW) * kH * 4);
+  for (auto& f : floats) f = std::uniform_real_distribution<float>(-2.0f, 2.0f)(rng);
+  std::vector<uint8_t> depth_bytes(static_cast<size_t>(kW) * kH * 4);
+  for (size_t i = 0; i < depth_bytes.size(); i += 4) {
+    const float d = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
+    std::memcpy(&depth_bytes[i], &d, 4);
+  }
+  const std::shared_ptr<const Texture2D> textures[] = {
+      Texture2D::from_rgba8(kW, kH, bytes, false, "unorm8"),
+      Texture2D::from_rgba8(kW, kH, bytes, true, "srgb8"),
+      Texture2D::from_rgba32f(kW, kH, floats, "float"),
+      Texture2D::view_of_surface(kW, kH, PixelFormat::RGBA8_UNORM, bytes.data(), "view8"),
+      Texture2D::view_of_surface(kW, kH, PixelFormat::D32_FLOAT, depth_bytes.data(), "depth"),
+  };
+  const float inf = std::numeric_limits<float>::infinity();
+  const float odd[] = {-0.3f, 1.7f, 0.0f, 1.0f, -0.0f, std::nanf(""), inf, -inf, 3e7f, -1e30f};
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  auto u = std::make_unique<float[]>(kBatchFragments);
+  auto v = std::make_unique<float[]>(kBatchFragments);
+  int checked = 0;
+  for (int round = 0; round < 240; ++round) {
+    force_simd_target(targets[round % targets.size()]);
+    const Texture2D& texture = *textures[round % 5];
+    const int quads = 1 + static_cast<int>(rng() % kBatchQuads);
+    const int kind = round % 4;  // centres, texel edges, anywhere, odd values
+    for (int f = 0; f < kBatchFragments; ++f) {
+      const int fc = std::min(f, quads * kQuadLanes - 1);  // padding repeats the last fragment
+      std::uniform_real_distribution<float> any(-0.2f, 1.2f);
+      const int x = static_cast<int>(rng() % kW), y = static_cast<int>(rng() % kH);
+      float uf = (x + 0.5f) / kW, vf = (y + 0.5f) / kH;
+      if (kind == 1) uf = static_cast<float>(x) / kW, vf = static_cast<float>(y) / kH;
+      if (kind == 2) uf = any(rng), vf = any(rng);
+      if (kind == 3 && rng() % 3 == 0) (rng() % 2 ? uf : vf) = odd[rng() % 10];
+      if (fc == f) {
+        u[f] = uf;
+        v[f] = vf;
+      } else {
+        u[f] = u[fc];
+        v[f] = v[fc];
+      }
+    }
+    std::vector<uint64_t> expected_trace{7}, trace{7};  // a granule before: merges count too
+    glm::vec4 expected[kBatchFragments];
+    {
+      const TexelTraceScope scope(&expected_trace);
+      for (int q = 0; q < quads; ++q) {
+        glm::vec2 uv[kQuadLanes];
+        for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = {u[q * 4 + lane], v[q * 4 + lane]};
+        texture.sample_quad(nearest_clamp(), uv, &expected[q * 4]);
+      }
+    }
+    alignas(64) float out[4][kBatchFragments];
+    {
+      const TexelTraceScope scope(&trace);
+      ASSERT_TRUE(sample_batch_nearest(texture, nearest_clamp(), u.get(), v.get(),
+                                       quads * kQuadLanes, out));
+    }
+    ASSERT_EQ(trace, expected_trace) << "round " << round;
+    for (int f = 0; f < quads * kQuadLanes; ++f) {
+      for (int c = 0; c < 4; ++c) {
+        ASSERT_EQ(std::bit_cast<uint32_t>(out[c][f]), std::bit_cast<uint32_t>(expected[f][c]))
+            << "round " << round << " fragment " << f << " channel " << c;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 240 * 8);
+}
+
+TEST(TextureBatch, OtherSamplersAreLeftToSampleQuad) {
+  const std::vector<uint8_t> bytes(16 * 4, 128);
+  const auto texture = Texture2D::from_rgba8(4, 4, bytes, false, "t");
+  float u[16] = {}, v[16] = {};
+  alignas(64) float out[4][kBatchFragments];
+  std::vector<uint64_t> trace;
+  const TexelTraceScope scope(&trace);
+  SamplerDesc linear = nearest_clamp();
+  linear.mag_filter = FilterMode::Linear;
+  EXPECT_FALSE(sample_batch_nearest(*texture, linear, u, v, 16, out));
+  SamplerDesc repeat = nearest_clamp();
+  repeat.wrap_v = WrapMode::Repeat;
+  EXPECT_FALSE(sample_batch_nearest(*texture, repeat, u, v, 16, out));
+  EXPECT_TRUE(trace.empty());
+  EXPECT_TRUE(sample_batch_nearest(*texture, nearest_clamp(), u, v, 16, out));
+  EXPECT_EQ(trace.size(), 1u);  // 16 reads of texel (0, 0): one granule
+}
+
+}  // namespace
+}  // namespace ontile
