@@ -55,17 +55,27 @@ QuadBatcher::QuadBatcher() : batch_(std::make_unique<FragmentBatch>()) {
 
 void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
                         const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
-                        const float* cell_depth) {
-  ctx_ = &ctx;
-  memory_ = &memory;
-  counters_ = &counters;
-  cells_ = cells;
-  cells_x_ = cells_x;
-  first_cell_x_ = first_cell_x;
-  first_cell_y_ = first_cell_y;
-  cell_depth_ = cell_depth;
-  queued_ = 0;
-  opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
+                        const float* cell_depth, const CellPlane* planes) {
+  if (!continues(ctx)) {
+    flush();
+    ctx_.emplace(ctx);
+    memory_ = &memory;
+    counters_ = &counters;
+    cells_ = cells;
+    cells_x_ = cells_x;
+    first_cell_x_ = first_cell_x;
+    first_cell_y_ = first_cell_y;
+    cell_depth_ = cell_depth;
+    opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
+    across_triangles_ = ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
+                        !ctx.late_z && !ctx.per_sample && ctx.subpass.inputs.empty();
+    triangle_count_ = 0;
+  } else if (triangles_[triangle_count_ - 1].first_quad == queued_) {
+    --triangle_count_;  // the previous triangle queued nothing: reuse its entry
+  }
+  triangles_[triangle_count_++] =
+      BatchTriangle{&ctx.tri, ctx.varyings, ctx.triangle_ref, planes[0].dx, planes[0].dy,
+                    planes[1].dx, planes[1].dy, planes[2].dx, planes[2].dy, queued_};
 }
 
 void QuadBatcher::flush() {
@@ -80,6 +90,10 @@ void QuadBatcher::flush() {
   } else {
     for (int q = 0; q < queued_; ++q) write_back(q);
   }
+  // The open triangle (the last) may queue more quads into the next batch.
+  triangles_[0] = triangles_[triangle_count_ - 1];
+  triangles_[0].first_quad = 0;
+  triangle_count_ = 1;
   queued_ = 0;
 }
 
@@ -92,25 +106,32 @@ void QuadBatcher::shade_invocation(int inv) {
   BatchOutput& out = *outputs_[inv];
   const float off_x = ctx.per_sample ? static_cast<float>(ctx.pattern.x[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
   const float off_y = ctx.per_sample ? static_cast<float>(ctx.pattern.y[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
+  // Runs of batch quads of one triangle: triangle table index and first batch quad.
+  int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
+  int runs = 0;
   int count = 0;
   for (int q = 0; q < queued_; ++q) {
     const QueuedQuad& quad = queue_[q];
     const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
     slot_[inv][q] = lanes ? count : -1;
     if (!lanes) continue;
-    const CellState& cell = cells_[quad.cell];
+    if (runs == 0 || run_triangle[runs - 1] != quad.triangle) {
+      run_triangle[runs] = quad.triangle;
+      run_first[runs++] = count;
+    }
     const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
     const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
     b.quad_x_px[count] = quad.qx;
     b.quad_y_px[count] = quad.qy;
     b.lane_mask[count] = lanes;
+    b.quad_primitive_id[count] = triangles_[quad.triangle].tri->primitive_id;
     for (int lane = 0; lane < kQuadLanes; ++lane) {
       const int f = count * kQuadLanes + lane;
       fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
       fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
-      l1_[f] = cell.planes[0].origin;
-      l2_[f] = cell.planes[1].origin;
-      z_[f] = cell.planes[2].origin;
+      l1_[f] = quad.l1;
+      l2_[f] = quad.l2;
+      z_[f] = quad.z;
     }
     ++count;
   }
@@ -126,18 +147,23 @@ void QuadBatcher::shade_invocation(int inv) {
     l2_[f] = l2_[last];
     z_[f] = z_[last];
   }
-  const CellPlane* planes = cells_[queue_[0].cell].planes;  // gradients are per triangle
-  InterpolationInput in{fx_, fy_, l1_, l2_, z_,
-                        planes[0].dx, planes[0].dy, planes[1].dx, planes[1].dy,
-                        planes[2].dx, planes[2].dy,
-                        {ctx.tri.setup.inv_w[0], ctx.tri.setup.inv_w[1], ctx.tri.setup.inv_w[2]},
-                        {ctx.varyings, ctx.varyings + ctx.varying_count, ctx.varyings + 2 * ctx.varying_count},
-                        ctx.varying_count};
-  interpolate_fragments(in, padded, b.depth, &b.varyings[0][0], kBatchFragments);
+  // Each run with its triangle's planes and vertices; the last run also fills the padding.
+  for (int r = 0; r < runs; ++r) {
+    const BatchTriangle& t = triangles_[run_triangle[r]];
+    const int first = run_first[r] * kQuadLanes;
+    const int end = r + 1 < runs ? run_first[r + 1] * kQuadLanes : padded;
+    const int n = ctx.varying_count;
+    InterpolationInput in{fx_ + first, fy_ + first, l1_ + first, l2_ + first, z_ + first,
+                          t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
+                          {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
+                          {t.varyings, t.varyings + n, t.varyings + 2 * n},
+                          n};
+    interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
+  }
   b.varying_count = ctx.varying_count;
   b.color_output_count = static_cast<int>(ctx.subpass.color_outputs.size());
-  b.front_facing = ctx.tri.setup.front_facing;
-  b.primitive_id = ctx.tri.primitive_id;
+  b.front_facing = ctx.tri.setup.front_facing;  // one facing per batch
+  b.primitive_id = b.quad_primitive_id[0];
   b.sample = ctx.per_sample ? inv : -1;
   b.fetch = ctx.fetch;
   // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
@@ -174,19 +200,19 @@ void QuadBatcher::shade_invocation(int inv) {
 namespace {
 
 // Records, per covered pixel, which samples were covered and written and what was accessed.
-void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
-                      QuadCoverage written) {
+void record_fragments(const TriangleContext& ctx, const BatchTriangle& triangle, int qx, int qy,
+                      QuadCoverage coverage, QuadCoverage written) {
   const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
   for (int lane = 0; lane < kQuadLanes; ++lane) {
     const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
     if (!covered) continue;
     FragmentAccess f;
-    f.triangle_ref = ctx.triangle_ref;
+    f.triangle_ref = triangle.triangle_ref;
     f.x_px = static_cast<uint16_t>(qx + (lane & 1));
     f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
     f.covered_samples = covered;
     f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
-    f.subpass = static_cast<uint8_t>(ctx.tri.subpass);
+    f.subpass = static_cast<uint8_t>(triangle.tri->subpass);
     if (ctx.depth_test) f.flags |= kDepthRead;
     if (f.written_samples && ctx.depth_write) f.flags |= kDepthWritten;
     if (f.written_samples && ctx.write_color && !ctx.subpass.color_outputs.empty()) {
@@ -207,7 +233,9 @@ void QuadBatcher::write_back(int q) {
     counters_->fragments_depth_rejected +=
         lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
   }
-  if (ctx.fragments) record_fragments(ctx, quad.qx, quad.qy, quad.coverage, passing);
+  if (ctx.fragments) {
+    record_fragments(ctx, triangles_[quad.triangle], quad.qx, quad.qy, quad.coverage, passing);
+  }
   if (!passing) return;
   const int samples = ctx.pattern.count;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
@@ -247,17 +275,32 @@ void QuadBatcher::write_back(int q) {
 // write_back for the common case, the batch at once: one sample per pixel, depth already
 // written by early Z, outputs already quantised per batch. Quads whose four lanes all pass are
 // copied to tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never
-// share a pixel, so the order of their writes does not matter.
+// share a pixel, so within a triangle the order of writes does not matter; a later triangle's
+// quads may overwrite an earlier one's, so full quads are stored before the next triangle's.
 void QuadBatcher::write_back_single_sample() {
   const TriangleContext& ctx = *ctx_;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const BatchOutput& out = *outputs_[0];
   int full_quads = 0;
+  const auto store_full = [&] {
+    for (size_t k = 0; k < outputs.size(); ++k) {
+      const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                        out.color[k][3]};
+      store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
+                       memory_->color_plane(outputs[k]));
+    }
+    full_quads = 0;
+  };
+  int triangle = queue_[0].triangle;
   for (int q = 0; q < queued_; ++q) {
     const QueuedQuad& quad = queue_[q];
     const uint8_t lanes = lanes_of(quad.passing);
     counters_->samples_written += lane_count(lanes);
     if (!lanes || !ctx.write_color) continue;
+    if (quad.triangle != triangle) {
+      if (full_quads) store_full();
+      triangle = quad.triangle;
+    }
     const int first = slot_[0][q] * kQuadLanes;
     const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
     if (lanes == 0xF) {
@@ -276,13 +319,7 @@ void QuadBatcher::write_back_single_sample() {
       }
     }
   }
-  if (full_quads == 0) return;
-  for (size_t k = 0; k < outputs.size(); ++k) {
-    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
-                                      out.color[k][3]};
-    store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
-                     memory_->color_plane(outputs[k]));
-  }
+  if (full_quads) store_full();
 }
 
 }  // namespace ontile

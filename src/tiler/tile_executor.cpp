@@ -17,7 +17,8 @@ namespace ontile {
 namespace {
 
 // Framebuffer fetch from this tile's memory (Vulkan subpassLoad): the quad passes its own
-// pixel coordinates, so only the current pixel is reachable.
+// pixel coordinates, so only the current pixel is reachable. One per subpass and tile, so a
+// batch shaded after later triangles were rasterized still holds a live one.
 class TileFetch final : public FramebufferFetch {
  public:
   TileFetch(const TileMemory& memory, const TileRect& rect, const std::vector<int>& inputs,
@@ -62,6 +63,7 @@ struct TileScratch {
   std::vector<CellState> cells;
   std::vector<float> cell_depth;  // per cell, per sample, 64 depths (row-major in the cell)
   std::vector<int> touched;       // cells the current triangle covered
+  std::vector<TileFetch> fetches;  // per subpass of the current tile
   QuadBatcher batcher;
 };
 
@@ -211,7 +213,7 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
   const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
   QuadBatcher& batcher = scratch.batcher;
   batcher.begin(ctx, memory, counters, scratch.cells.data(), cells.cells_x, cells.first_x,
-                cells.first_y, scratch.cell_depth.data());
+                cells.first_y, scratch.cell_depth.data(), scratch.cells[scratch.touched[0]].planes);
   const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
   const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
   for (int qy = y_begin; qy < y_end; qy += 2) {
@@ -242,11 +244,11 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
           // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
           if (!passing && !ctx.fragments) continue;
         }
-        batcher.add(QueuedQuad{qx, qy, cell, coverage, passing});
+        batcher.add(qx, qy, cell, coverage, passing);
       }
     }
   }
-  batcher.flush();
+  batcher.end_triangle();
 }
 
 }  // namespace
@@ -279,6 +281,11 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     for (int c = 0; c < cells.count(); ++c) refresh_hiz(scratch.hiz, cells, c, rect, memory);
   }
   const SamplePattern& pattern = *standard_sample_pattern(pass.samples);
+  scratch.batcher.reset();
+  scratch.fetches.clear();
+  for (const SubpassDesc& subpass : pass.subpasses) {
+    scratch.fetches.emplace_back(memory, rect, subpass.inputs, pass.depth_index);
+  }
   for (uint32_t e = begin; e < end; ++e) {
     const uint32_t ref = params.tile_entries[e];
     const BinnedTriangle& tri = params.triangle(ref);
@@ -287,11 +294,13 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     const int n = draw.vertex_shader->varying_count();
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
-    const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
     TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
-                              rect, &fetch, ref,
+                              rect, &scratch.fetches[tri.subpass], ref,
                               record_fragment_accesses ? &trace.fragments : nullptr);
     ctx.hiz_enabled = ctx.hiz_enabled && hierarchical_z;
+    // Quads of earlier triangles still queued are shaded and written before anything of a
+    // triangle that cannot join their batch happens.
+    if (!scratch.batcher.continues(ctx)) scratch.batcher.flush();
     scratch.touched.clear();
     rasterize_cells(ctx, cells, memory, counters, scratch);
     if (scratch.touched.empty()) continue;
@@ -305,6 +314,7 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
       for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
     }
   }
+  scratch.batcher.flush();
   store_tile(pass, rect, memory);
   trace.texture_granules.end = texel_buffer.size();
 }
