@@ -76,6 +76,22 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
   triangles_[triangle_count_++] =
       BatchTriangle{&ctx.tri, ctx.varyings, ctx.triangle_ref, planes[0].dx, planes[0].dy,
                     planes[1].dx, planes[1].dy, planes[2].dx, planes[2].dy, queued_};
+  live_from_ = queued_;
+}
+
+void QuadBatcher::end_triangle() {
+  if (!across_triangles_) {
+    flush();
+    return;
+  }
+  for (int q = live_from_; q < queued_; ++q) {
+    QueuedQuad& quad = queue_[q];
+    const CellPlane* planes = cells_[quad.cell].planes;
+    quad.l1 = planes[0].origin;
+    quad.l2 = planes[1].origin;
+    quad.z = planes[2].origin;
+  }
+  live_from_ = queued_;
 }
 
 void QuadBatcher::flush() {
@@ -88,13 +104,16 @@ void QuadBatcher::flush() {
   if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_ && !ctx.fragments) {
     write_back_single_sample();
   } else {
-    for (int q = 0; q < queued_; ++q) write_back(q);
+    for (int t = 0; t < triangle_count_; ++t) {
+      for (int q = triangles_[t].first_quad; q < end_of(t); ++q) write_back(q, triangles_[t]);
+    }
   }
   // The open triangle (the last) may queue more quads into the next batch.
   triangles_[0] = triangles_[triangle_count_ - 1];
   triangles_[0].first_quad = 0;
   triangle_count_ = 1;
   queued_ = 0;
+  live_from_ = 0;
 }
 
 // Shades, at one sample position (or the pixel centre), every queued quad that has lanes for
@@ -110,30 +129,47 @@ void QuadBatcher::shade_invocation(int inv) {
   int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
   int runs = 0;
   int count = 0;
-  for (int q = 0; q < queued_; ++q) {
-    const QueuedQuad& quad = queue_[q];
-    const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
-    slot_[inv][q] = lanes ? count : -1;
-    if (!lanes) continue;
-    if (runs == 0 || run_triangle[runs - 1] != quad.triangle) {
-      run_triangle[runs] = quad.triangle;
-      run_first[runs++] = count;
+  // Locals: the stores below are ints too, so members would be reloaded every quad.
+  const int triangles = triangle_count_, cells_x = cells_x_;
+  const int first_cell_x = first_cell_x_, first_cell_y = first_cell_y_;
+  for (int t = 0; t < triangles; ++t) {
+    const int first_slot = count;
+    const uint32_t primitive_id = triangles_[t].tri->primitive_id;
+    // Only the open triangle's quads (from live_from_ on) still have their planes in the cells.
+    const bool live = triangles_[t].first_quad >= live_from_;
+    const int q_end = end_of(t);
+    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
+      const QueuedQuad& quad = queue_[q];
+      const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
+      slot_[inv][q] = lanes ? count : -1;
+      if (!lanes) continue;
+      const int cx = first_cell_x + (quad.cell % cells_x) * kCellSizePx;
+      const int cy = first_cell_y + (quad.cell / cells_x) * kCellSizePx;
+      b.quad_x_px[count] = quad.qx;
+      b.quad_y_px[count] = quad.qy;
+      b.lane_mask[count] = lanes;
+      b.quad_primitive_id[count] = primitive_id;
+      float l1 = quad.l1, l2 = quad.l2, z = quad.z;
+      if (live) {
+        const CellPlane* planes = cells_[quad.cell].planes;
+        l1 = planes[0].origin;
+        l2 = planes[1].origin;
+        z = planes[2].origin;
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const int f = count * kQuadLanes + lane;
+        fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
+        fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
+        l1_[f] = l1;
+        l2_[f] = l2;
+        z_[f] = z;
+      }
+      ++count;
     }
-    const int cx = first_cell_x_ + (quad.cell % cells_x_) * kCellSizePx;
-    const int cy = first_cell_y_ + (quad.cell / cells_x_) * kCellSizePx;
-    b.quad_x_px[count] = quad.qx;
-    b.quad_y_px[count] = quad.qy;
-    b.lane_mask[count] = lanes;
-    b.quad_primitive_id[count] = triangles_[quad.triangle].tri->primitive_id;
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      const int f = count * kQuadLanes + lane;
-      fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
-      fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
-      l1_[f] = quad.l1;
-      l2_[f] = quad.l2;
-      z_[f] = quad.z;
+    if (count > first_slot) {
+      run_triangle[runs] = t;
+      run_first[runs++] = first_slot;
     }
-    ++count;
   }
   if (count == 0) return;
   b.quad_count = count;
@@ -225,7 +261,7 @@ void record_fragments(const TriangleContext& ctx, const BatchTriangle& triangle,
 
 }  // namespace
 
-void QuadBatcher::write_back(int q) {
+void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
   const TriangleContext& ctx = *ctx_;
   const QueuedQuad& quad = queue_[q];
   const QuadCoverage passing = quad.passing;
@@ -234,7 +270,7 @@ void QuadBatcher::write_back(int q) {
         lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
   }
   if (ctx.fragments) {
-    record_fragments(ctx, triangles_[quad.triangle], quad.qx, quad.qy, quad.coverage, passing);
+    record_fragments(ctx, triangle, quad.qx, quad.qy, quad.coverage, passing);
   }
   if (!passing) return;
   const int samples = ctx.pattern.count;
@@ -291,35 +327,34 @@ void QuadBatcher::write_back_single_sample() {
     }
     full_quads = 0;
   };
-  int triangle = queue_[0].triangle;
-  for (int q = 0; q < queued_; ++q) {
-    const QueuedQuad& quad = queue_[q];
-    const uint8_t lanes = lanes_of(quad.passing);
-    counters_->samples_written += lane_count(lanes);
-    if (!lanes || !ctx.write_color) continue;
-    if (quad.triangle != triangle) {
-      if (full_quads) store_full();
-      triangle = quad.triangle;
-    }
-    const int first = slot_[0][q] * kQuadLanes;
-    const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
-    if (lanes == 0xF) {
-      full_first_fragment_[full_quads] = first;
-      full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
-      ++full_quads;
-      continue;
-    }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!((lanes >> lane) & 1u)) continue;
-      const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
-      const int f = first + lane;
-      for (size_t k = 0; k < outputs.size(); ++k) {
-        memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
-                                               out.color[k][2][f], out.color[k][3][f]};
+  const int triangles = triangle_count_;
+  for (int t = 0; t < triangles; ++t) {
+    const int q_end = end_of(t);
+    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
+      const QueuedQuad& quad = queue_[q];
+      const uint8_t lanes = lanes_of(quad.passing);
+      counters_->samples_written += lane_count(lanes);
+      if (!lanes || !ctx.write_color) continue;
+      const int first = slot_[0][q] * kQuadLanes;
+      const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
+      if (lanes == 0xF) {
+        full_first_fragment_[full_quads] = first;
+        full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
+        ++full_quads;
+        continue;
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        if (!((lanes >> lane) & 1u)) continue;
+        const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
+        const int f = first + lane;
+        for (size_t k = 0; k < outputs.size(); ++k) {
+          memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
+                                                 out.color[k][2][f], out.color[k][3][f]};
+        }
       }
     }
+    if (full_quads) store_full();
   }
-  if (full_quads) store_full();
 }
 
 }  // namespace ontile

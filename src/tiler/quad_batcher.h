@@ -78,8 +78,9 @@ struct CellState {
 struct QueuedQuad {
   int qx, qy, cell;
   QuadCoverage coverage, passing;
-  int triangle;     // index in the batch's triangle table
-  float l1, l2, z;  // the triangle's plane values at the cell's origin (CellState::planes)
+  // The triangle's plane values at the cell's origin, copied from CellState::planes when the
+  // triangle ends with the batch still open (the next triangle overwrites the cell state).
+  float l1, l2, z;
 };
 
 // What a batch keeps of each triangle with quads in it: the tile's cell state already holds a
@@ -89,7 +90,7 @@ struct BatchTriangle {
   const float* varyings;
   uint32_t triangle_ref;
   float l1_dx, l1_dy, l2_dx, l2_dy, z_dx, z_dy;  // plane gradients per pixel
-  int first_quad;                                 // queue position of its first quad
+  int first_quad;  // queue position of its first quad (its quads run to the next triangle's)
 };
 
 // Usage per triangle: if (!continues(ctx)) flush(); ... begin(); add() per quad; end_triangle().
@@ -112,23 +113,28 @@ class QuadBatcher {
              const CellState* cells, int cells_x, int first_cell_x, int first_cell_y,
              const float* cell_depth, const CellPlane* planes);
   void add(int qx, int qy, int cell, QuadCoverage coverage, QuadCoverage passing) {
-    const CellPlane* planes = cells_[cell].planes;
-    queue_[queued_++] = QueuedQuad{qx, qy, cell, coverage, passing, triangle_count_ - 1,
-                                   planes[0].origin, planes[1].origin, planes[2].origin};
+    QueuedQuad& quad = queue_[queued_++];
+    quad.qx = qx;
+    quad.qy = qy;
+    quad.cell = cell;
+    quad.coverage = coverage;
+    quad.passing = passing;
     if (queued_ == kBatchQuads) flush();
   }
-  // Ends a triangle: its quads stay queued only if the next triangle may join them.
-  void end_triangle() {
-    if (!across_triangles_) flush();
-  }
+  // Ends a triangle: its quads stay queued only if the next triangle may join them, and then
+  // keep their plane origins.
+  void end_triangle();
   // Shades and writes every queued quad.
   void flush();
   // Drops queued quads without shading them (a tile that threw may have left some).
-  void reset() { queued_ = 0; }
+  void reset() { queued_ = live_from_ = 0; }
 
  private:
   void shade_invocation(int invocation);
-  void write_back(int q);
+  void write_back(int q, const BatchTriangle& triangle);
+  int end_of(int triangle) const {  // queue position after the triangle's last quad
+    return triangle + 1 < triangle_count_ ? triangles_[triangle + 1].first_quad : queued_;
+  }
   void write_back_single_sample();
 
   std::optional<TriangleContext> ctx_;  // the batch's first triangle: draw, pass and facing
@@ -141,6 +147,7 @@ class QuadBatcher {
   bool across_triangles_ = false;  // the batch may take the next triangle's quads
   QueuedQuad queue_[kBatchQuads];
   int queued_ = 0;
+  int live_from_ = 0;  // queued quads from here on read their plane origins from cells_
   // Every triangle but the last has a queued quad: at most one per quad, plus the open one.
   BatchTriangle triangles_[kBatchQuads + 1];
   int triangle_count_ = 0;
