@@ -1,4 +1,4 @@
-// Batched shading and the per-quad writes of a tile's triangle (see quad_batcher.h).
+// Batched shading and the per-quad writes of a tile's triangles (see quad_batcher.h).
 #include "tiler/quad_batcher.h"
 
 #include <bit>
