@@ -62,7 +62,8 @@ void cell_depth_bounds(const CellPlane& depth, int cell_x0, int cell_y0, int x0,
 // row-major. Same bits on every SIMD target (no FMA, IEEE operations only).
 void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels]);
 
-// Perspective-correct interpolation for `count` fragments (a multiple of 16): fragment f sits at
+// Perspective-correct interpolation for `count` fragments (a multiple of 4, the quad lanes; it
+// reads and writes nothing past them): fragment f sits at
 // offset (fx[f], fy[f]) pixels from its cell's top-left pixel centre and uses that cell's planes
 // (l1, l2, z per fragment). Writes depth[f] (clamped to [0, 1]) and, for each varying k,
 // out_varyings[k * stride + f] = v0[k] + w1 (v1[k] - v0[k]) + w2 (v2[k] - v0[k]) with w_i the

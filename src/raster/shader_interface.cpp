@@ -10,7 +10,7 @@ void FragmentBatch::quad(int q, QuadFragment& out) const {
   out.y_px = quad_y_px[q];
   out.lane_mask = lane_mask[q];
   out.front_facing = front_facing;
-  out.primitive_id = primitive_id;
+  out.primitive_id = quad_primitive_id[q];
   out.sample = sample;
   out.fetch = fetch;
   for (int lane = 0; lane < kQuadLanes; ++lane) out.depth[lane] = depth[q * kQuadLanes + lane];
@@ -51,6 +51,7 @@ void FragmentShader::shade(const QuadFragment& quad, QuadOutput& out) const {
   batch->color_output_count = kMaxColorTargets;
   batch->front_facing = quad.front_facing;
   batch->primitive_id = quad.primitive_id;
+  batch->quad_primitive_id[0] = quad.primitive_id;
   batch->sample = quad.sample;
   batch->fetch = quad.fetch;
   batch->quad_x_px[0] = quad.x_px;

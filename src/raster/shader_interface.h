@@ -73,8 +73,10 @@ struct QuadOutput {
   void discard(int lane) { discard_mask |= static_cast<uint8_t>(1u << lane); }
 };
 
-// Up to kBatchQuads quads of one triangle, in the tile's row-major quad order, shaded by one
-// call. Structure-of-arrays: fragment f is lane (f & 3) of quad (f >> 2). Arrays are valid up
+// Up to kBatchQuads quads, in the tile's row-major quad order, shaded by one call: quads of one
+// triangle, or of consecutive triangles of one draw with one facing when the functor allows it
+// (FragmentShader::batches_across_triangles). Structure-of-arrays: fragment f is lane (f & 3)
+// of quad (f >> 2). Arrays are valid up
 // to padded_fragment_count() (a multiple of 16, so any SIMD width runs whole vectors); the
 // padding repeats the last quad and its outputs are ignored.
 constexpr int kBatchQuads = 16;
@@ -85,9 +87,10 @@ struct FragmentBatch {
   int varying_count = 0;       // floats per fragment in varyings
   int color_output_count = 0;  // colour outputs of the subpass
   bool front_facing = true;
-  uint32_t primitive_id = 0;
+  uint32_t primitive_id = 0;   // of quad 0's triangle; quad_primitive_id holds every quad's
   int sample = -1;             // as QuadFragment::sample
   const FramebufferFetch* fetch = nullptr;
+  uint32_t quad_primitive_id[kBatchQuads] = {};
   int32_t quad_x_px[kBatchQuads] = {};
   int32_t quad_y_px[kBatchQuads] = {};
   uint8_t lane_mask[kBatchQuads] = {};
@@ -139,6 +142,12 @@ class FragmentShader {
   // True to run once per covered sample at the sample's position instead of once per pixel
   // (Vulkan sampleShadingEnable); with one sample per pixel it changes nothing.
   virtual bool per_sample_shading() const { return false; }
+  // True when a batch may hold quads of several consecutive triangles of one draw (with one
+  // facing): the functor's outputs for a quad depend only on that quad's inputs (never on
+  // batch.primitive_id, which is quad 0's; quad_primitive_id is per quad), and it reads every
+  // texel of quad q before any texel of quad q + 1, so the texel trace is the same whatever
+  // the batch boundaries. Batches then hold up to kBatchQuads quads instead of one triangle's.
+  virtual bool batches_across_triangles() const { return false; }
 };
 
 }  // namespace ontile

@@ -38,6 +38,8 @@ class LambertShader final : public FragmentShader {
  public:
   explicit LambertShader(const LambertParams& p) : p_(p) {}
   bool may_discard() const override { return kAlphaTest; }
+  // Per-fragment arithmetic and per-quad texture reads (base, then emission, quad by quad).
+  bool batches_across_triangles() const override { return true; }
 
   // Structure-of-arrays over the batch: texture reads per quad (the LOD needs the quad's
   // derivatives), the lighting arithmetic as plain loops over fragment lanes.

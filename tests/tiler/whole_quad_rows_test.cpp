@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "context/frame_report.h"
-#include "pipelines/render_frame.h"
+#include "pipelines/kit/render_frame.h"
 #include "support/generated_scene.h"
-#include "tiler/tile_executor.h"
+#include "tiler/detail/tile_executor.h"
 
 namespace ontile {
 namespace {

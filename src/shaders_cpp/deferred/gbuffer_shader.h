@@ -13,6 +13,8 @@ class GBufferShader final : public FragmentShader {
   GBufferShader(const PbrMaterialParams& material, const GBufferLayout& layout, glm::vec3 ambient)
       : material_(material), layout_(layout), ambient_(ambient) {}
   bool may_discard() const override { return kAlphaTest; }
+  // Per-fragment arithmetic; texture reads per quad (evaluate_pbr_batch).
+  bool batches_across_triangles() const override { return true; }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     SurfaceBatch s;

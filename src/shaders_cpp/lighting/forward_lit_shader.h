@@ -13,6 +13,9 @@ class ForwardLitShader final : public FragmentShader {
   ForwardLitShader(const PbrMaterialParams& material, const SceneLighting& lighting, glm::vec3 camera_position)
       : material_(material), lighting_(lighting), camera_position_(camera_position) {}
   bool may_discard() const override { return kAlphaTest; }
+  // Texture reads per quad (evaluate_pbr_batch); lighting per fragment (each fragment's own
+  // light-grid list in a fixed order, whatever run of fragments it is shaded in).
+  bool batches_across_triangles() const override { return true; }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int n = batch.padded_fragment_count();

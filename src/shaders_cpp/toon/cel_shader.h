@@ -51,6 +51,9 @@ class CelShader final : public FragmentShader {
     one_map_ = p_.lit_map && p_.lit_map == p_.shadow_map && p_.lit_sampler == p_.shadow_sampler;
   }
 
+  // Per-fragment arithmetic and per-quad texture reads (lit, then shadow map, quad by quad).
+  bool batches_across_triangles() const override { return true; }
+
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;
     batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);

@@ -66,6 +66,9 @@ class MatCapShader final : public FragmentShader {
     }
   }
 
+  // Per-fragment arithmetic; texture reads quad by quad (normal map, MatCap, base map).
+  bool batches_across_triangles() const override { return true; }
+
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;
     batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);

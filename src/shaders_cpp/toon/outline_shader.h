@@ -68,6 +68,9 @@ class OutlineColorShader final : public FragmentShader {
   OutlineColorShader(glm::vec4 color, NormalEncoding normal_encoding)
       : color_(color), outputs_{normal_encoding, glm::vec4(0.0f)} {}
 
+  // Constants per fragment, no texture reads.
+  bool batches_across_triangles() const override { return true; }
+
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int n = batch.padded_fragment_count();
     alignas(64) BatchVec3 view_normal;

@@ -37,6 +37,9 @@ class ToonEnvShader final : public FragmentShader {
     }
   }
 
+  // Per-fragment arithmetic; texture reads quad by quad (base map, then environment per lane).
+  bool batches_across_triangles() const override { return true; }
+
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;
     batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);

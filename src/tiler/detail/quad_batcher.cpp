@@ -1,4 +1,4 @@
-// Batched shading and the per-quad writes of a tile's triangle (see quad_batcher.h).
+// Batched shading and the per-quad writes of a tile's triangles (see quad_batcher.h).
 #include "tiler/detail/quad_batcher.h"
 
 #include <bit>
@@ -54,14 +54,40 @@ QuadBatcher::QuadBatcher() : batch_(std::make_unique<FragmentBatch>()) {
 }
 
 void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
-                        const CellState* cells, const float* cell_depth) {
-  ctx_ = &ctx;
-  memory_ = &memory;
-  counters_ = &counters;
-  cells_ = cells;
-  cell_depth_ = cell_depth;
-  queued_ = 0;
-  opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
+                        const CellState* cells, const float* cell_depth, const CellPlane* planes) {
+  if (!continues(ctx)) {
+    flush();
+    ctx_.emplace(ctx);
+    memory_ = &memory;
+    counters_ = &counters;
+    cells_ = cells;
+    cell_depth_ = cell_depth;
+    opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
+    across_triangles_ = ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
+                        !ctx.late_z && !ctx.per_sample && ctx.subpass.inputs.empty();
+    triangle_count_ = 0;
+  } else if (triangles_[triangle_count_ - 1].first_quad == queued_) {
+    --triangle_count_;  // the previous triangle queued nothing: reuse its entry
+  }
+  triangles_[triangle_count_++] =
+      BatchTriangle{&ctx.tri, ctx.varyings, ctx.triangle_ref, planes[0].dx, planes[0].dy,
+                    planes[1].dx, planes[1].dy, planes[2].dx, planes[2].dy, queued_};
+  live_from_ = queued_;
+}
+
+void QuadBatcher::end_triangle() {
+  if (!across_triangles_) {
+    flush();
+    return;
+  }
+  for (int q = live_from_; q < queued_; ++q) {
+    QueuedQuad& quad = queue_[q];
+    const CellPlane* planes = cells_[quad.cell].planes;
+    quad.l1 = planes[0].origin;
+    quad.l2 = planes[1].origin;
+    quad.z = planes[2].origin;
+  }
+  live_from_ = queued_;
 }
 
 void QuadBatcher::flush() {
@@ -74,9 +100,16 @@ void QuadBatcher::flush() {
   if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_ && !ctx.fragments) {
     write_back_single_sample();
   } else {
-    for (int q = 0; q < queued_; ++q) write_back(q);
+    for (int t = 0; t < triangle_count_; ++t) {
+      for (int q = triangles_[t].first_quad; q < end_of(t); ++q) write_back(q, triangles_[t]);
+    }
   }
+  // The open triangle (the last) may queue more quads into the next batch.
+  triangles_[0] = triangles_[triangle_count_ - 1];
+  triangles_[0].first_quad = 0;
+  triangle_count_ = 1;
   queued_ = 0;
+  live_from_ = 0;
 }
 
 // Shades, at one sample position (or the pixel centre), every queued quad that has lanes for
@@ -88,32 +121,49 @@ void QuadBatcher::shade_invocation(int inv) {
   BatchOutput& out = *outputs_[inv];
   const float off_x = ctx.per_sample ? static_cast<float>(ctx.pattern.x[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
   const float off_y = ctx.per_sample ? static_cast<float>(ctx.pattern.y[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
+  // Runs of batch quads of one triangle: triangle table index and first batch quad.
+  int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
+  int runs = 0;
   int count = 0;
-  for (int q = 0; q < queued_; ++q) {
-    const QueuedQuad& quad = queue_[q];
-    const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
-    slot_[inv][q] = lanes ? count : -1;
-    if (!lanes) continue;
-    const CellState& cell = cells_[quad.cell];
-    b.quad_x_px[count] = quad.qx;
-    b.quad_y_px[count] = quad.qy;
-    b.lane_mask[count] = lanes;
-    // Lane (i, j) of the quad sits at (qx + i - cx, qy + j - cy) from the cell's origin.
-    const int f = count * kQuadLanes;
-    const float x0 = static_cast<float>(quad.qx - quad.cell_x) + off_x;
-    const float x1 = static_cast<float>(quad.qx + 1 - quad.cell_x) + off_x;
-    const float y0 = static_cast<float>(quad.qy - quad.cell_y) + off_y;
-    const float y1 = static_cast<float>(quad.qy + 1 - quad.cell_y) + off_y;
-    const float l1 = cell.planes[0].origin, l2 = cell.planes[1].origin, z = cell.planes[2].origin;
-    const float quad_x[kQuadLanes] = {x0, x1, x0, x1}, quad_y[kQuadLanes] = {y0, y0, y1, y1};
-    const float quad_l1[kQuadLanes] = {l1, l1, l1, l1}, quad_l2[kQuadLanes] = {l2, l2, l2, l2};
-    const float quad_z[kQuadLanes] = {z, z, z, z};
-    std::memcpy(fx_ + f, quad_x, sizeof quad_x);
-    std::memcpy(fy_ + f, quad_y, sizeof quad_y);
-    std::memcpy(l1_ + f, quad_l1, sizeof quad_l1);
-    std::memcpy(l2_ + f, quad_l2, sizeof quad_l2);
-    std::memcpy(z_ + f, quad_z, sizeof quad_z);
-    ++count;
+  // Locals: the stores below are ints too, so members would be reloaded every quad.
+  const int triangles = triangle_count_;
+  for (int t = 0; t < triangles; ++t) {
+    const int first_slot = count;
+    const uint32_t primitive_id = triangles_[t].tri->primitive_id;
+    // Only the open triangle's quads (from live_from_ on) still have their planes in the cells.
+    const bool live = triangles_[t].first_quad >= live_from_;
+    const int q_end = end_of(t);
+    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
+      const QueuedQuad& quad = queue_[q];
+      const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
+      slot_[inv][q] = lanes ? count : -1;
+      if (!lanes) continue;
+      const int cx = quad.cell_x, cy = quad.cell_y;
+      b.quad_x_px[count] = quad.qx;
+      b.quad_y_px[count] = quad.qy;
+      b.lane_mask[count] = lanes;
+      b.quad_primitive_id[count] = primitive_id;
+      float l1 = quad.l1, l2 = quad.l2, z = quad.z;
+      if (live) {
+        const CellPlane* planes = cells_[quad.cell].planes;
+        l1 = planes[0].origin;
+        l2 = planes[1].origin;
+        z = planes[2].origin;
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const int f = count * kQuadLanes + lane;
+        fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
+        fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
+        l1_[f] = l1;
+        l2_[f] = l2;
+        z_[f] = z;
+      }
+      ++count;
+    }
+    if (count > first_slot) {
+      run_triangle[runs] = t;
+      run_first[runs++] = first_slot;
+    }
   }
   if (count == 0) return;
   b.quad_count = count;
@@ -127,18 +177,23 @@ void QuadBatcher::shade_invocation(int inv) {
     l2_[f] = l2_[last];
     z_[f] = z_[last];
   }
-  const CellPlane* planes = cells_[queue_[0].cell].planes;  // gradients are per triangle
-  InterpolationInput in{fx_, fy_, l1_, l2_, z_,
-                        planes[0].dx, planes[0].dy, planes[1].dx, planes[1].dy,
-                        planes[2].dx, planes[2].dy,
-                        {ctx.tri.setup.inv_w[0], ctx.tri.setup.inv_w[1], ctx.tri.setup.inv_w[2]},
-                        {ctx.varyings, ctx.varyings + ctx.varying_count, ctx.varyings + 2 * ctx.varying_count},
-                        ctx.varying_count};
-  interpolate_fragments(in, padded, b.depth, &b.varyings[0][0], kBatchFragments);
+  // Each run with its triangle's planes and vertices; the last run also fills the padding.
+  for (int r = 0; r < runs; ++r) {
+    const BatchTriangle& t = triangles_[run_triangle[r]];
+    const int first = run_first[r] * kQuadLanes;
+    const int end = r + 1 < runs ? run_first[r + 1] * kQuadLanes : padded;
+    const int n = ctx.varying_count;
+    InterpolationInput in{fx_ + first, fy_ + first, l1_ + first, l2_ + first, z_ + first,
+                          t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
+                          {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
+                          {t.varyings, t.varyings + n, t.varyings + 2 * n},
+                          n};
+    interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
+  }
   b.varying_count = ctx.varying_count;
   b.color_output_count = static_cast<int>(ctx.subpass.color_outputs.size());
-  b.front_facing = ctx.tri.setup.front_facing;
-  b.primitive_id = ctx.tri.primitive_id;
+  b.front_facing = ctx.tri.setup.front_facing;  // one facing per batch
+  b.primitive_id = b.quad_primitive_id[0];
   b.sample = ctx.per_sample ? inv : -1;
   b.fetch = ctx.fetch;
   // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
@@ -163,7 +218,6 @@ void QuadBatcher::shade_invocation(int inv) {
     if (slot < 0) continue;
     counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
     const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
-    if (!discarded) continue;
     for (int lane = 0; lane < kQuadLanes; ++lane) {
       if (!((discarded >> lane) & 1u)) continue;
       const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
@@ -176,19 +230,19 @@ void QuadBatcher::shade_invocation(int inv) {
 namespace {
 
 // Records, per covered pixel, which samples were covered and written and what was accessed.
-void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage coverage,
-                      QuadCoverage written) {
+void record_fragments(const TriangleContext& ctx, const BatchTriangle& triangle, int qx, int qy,
+                      QuadCoverage coverage, QuadCoverage written) {
   const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
   for (int lane = 0; lane < kQuadLanes; ++lane) {
     const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
     if (!covered) continue;
     FragmentAccess f;
-    f.triangle_ref = ctx.triangle_ref;
+    f.triangle_ref = triangle.triangle_ref;
     f.x_px = static_cast<uint16_t>(qx + (lane & 1));
     f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
     f.covered_samples = covered;
     f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
-    f.subpass = static_cast<uint8_t>(ctx.tri.subpass);
+    f.subpass = static_cast<uint8_t>(triangle.tri->subpass);
     if (ctx.depth_test) f.flags |= kDepthRead;
     if (f.written_samples && ctx.depth_write) f.flags |= kDepthWritten;
     if (f.written_samples && ctx.write_color && !ctx.subpass.color_outputs.empty()) {
@@ -201,7 +255,7 @@ void record_fragments(const TriangleContext& ctx, int qx, int qy, QuadCoverage c
 
 }  // namespace
 
-void QuadBatcher::write_back(int q) {
+void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
   const TriangleContext& ctx = *ctx_;
   const QueuedQuad& quad = queue_[q];
   const QuadCoverage passing = quad.passing;
@@ -209,7 +263,9 @@ void QuadBatcher::write_back(int q) {
     counters_->fragments_depth_rejected +=
         lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
   }
-  if (ctx.fragments) record_fragments(ctx, quad.qx, quad.qy, quad.coverage, passing);
+  if (ctx.fragments) {
+    record_fragments(ctx, triangle, quad.qx, quad.qy, quad.coverage, passing);
+  }
   if (!passing) return;
   const int samples = ctx.pattern.count;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
@@ -248,41 +304,49 @@ void QuadBatcher::write_back(int q) {
 // write_back for the common case, the batch at once: one sample per pixel, depth already
 // written by early Z, outputs already quantised per batch. Quads whose four lanes all pass are
 // copied to tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never
-// share a pixel, so the order of their writes does not matter.
+// share a pixel, so within a triangle the order of writes does not matter; a later triangle's
+// quads may overwrite an earlier one's, so full quads are stored before the next triangle's.
 void QuadBatcher::write_back_single_sample() {
   const TriangleContext& ctx = *ctx_;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const BatchOutput& out = *outputs_[0];
   int full_quads = 0;
-  for (int q = 0; q < queued_; ++q) {
-    const QueuedQuad& quad = queue_[q];
-    const uint8_t lanes = lanes_of(quad.passing);
-    counters_->samples_written += lane_count(lanes);
-    if (!lanes || !ctx.write_color) continue;
-    const int first = slot_[0][q] * kQuadLanes;
-    const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
-    if (lanes == 0xF) {
-      full_first_fragment_[full_quads] = first;
-      full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
-      ++full_quads;
-      continue;
+  const auto store_full = [&] {
+    for (size_t k = 0; k < outputs.size(); ++k) {
+      const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                        out.color[k][3]};
+      store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
+                       memory_->color_plane(outputs[k]));
     }
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if (!((lanes >> lane) & 1u)) continue;
-      const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
-      const int f = first + lane;
-      for (size_t k = 0; k < outputs.size(); ++k) {
-        memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
-                                               out.color[k][2][f], out.color[k][3][f]};
+    full_quads = 0;
+  };
+  const int triangles = triangle_count_;
+  for (int t = 0; t < triangles; ++t) {
+    const int q_end = end_of(t);
+    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
+      const QueuedQuad& quad = queue_[q];
+      const uint8_t lanes = lanes_of(quad.passing);
+      counters_->samples_written += lane_count(lanes);
+      if (!lanes || !ctx.write_color) continue;
+      const int first = slot_[0][q] * kQuadLanes;
+      const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
+      if (lanes == 0xF) {
+        full_first_fragment_[full_quads] = first;
+        full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
+        ++full_quads;
+        continue;
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        if (!((lanes >> lane) & 1u)) continue;
+        const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
+        const int f = first + lane;
+        for (size_t k = 0; k < outputs.size(); ++k) {
+          memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
+                                                 out.color[k][2][f], out.color[k][3][f]};
+        }
       }
     }
-  }
-  if (full_quads == 0) return;
-  for (size_t k = 0; k < outputs.size(); ++k) {
-    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
-                                      out.color[k][3]};
-    store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
-                     memory_->color_plane(outputs[k]));
+    if (full_quads) store_full();
   }
 }
 

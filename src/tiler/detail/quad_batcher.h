@@ -1,9 +1,10 @@
-// The shading half of a tile's triangle: queues the triangle's covered quads in row-major
-// order, shades them in batches of up to 16 quads per functor call (structure-of-arrays
-// varyings interpolated on SIMD lanes), then applies discards, late depth, blending and the
-// attachment formats' quantisation, quad by quad in queue order.
+// The shading half of a tile's triangles: queues covered quads in the tile's row-major order,
+// shades them in batches of up to 16 quads per functor call (structure-of-arrays varyings
+// interpolated on SIMD lanes; quads of consecutive triangles of one draw share a batch when the
+// functor allows it), then applies discards, late depth, blending and quantisation in queue order.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "raster/cell_raster.h"
@@ -78,33 +79,79 @@ struct QueuedQuad {
   int qx, qy, cell;
   int cell_x, cell_y;  // the cell's top-left pixel
   QuadCoverage coverage, passing;
+  // The triangle's plane values at the cell's origin, copied from CellState::planes when the
+  // triangle ends with the batch still open (the next triangle overwrites the cell state).
+  float l1, l2, z;
 };
 
+// What a batch keeps of each triangle with quads in it: the tile's cell state already holds a
+// later triangle's planes when the batch is shaded.
+struct BatchTriangle {
+  const BinnedTriangle* tri;
+  const float* varyings;
+  uint32_t triangle_ref;
+  float l1_dx, l1_dy, l2_dx, l2_dy, z_dx, z_dy;  // plane gradients per pixel
+  int first_quad;  // queue position of its first quad (its quads run to the next triangle's)
+};
+
+// Usage per triangle: if (!continues(ctx)) flush(); ... begin(); add() per quad; end_triangle().
+// A batch spans triangles only while nothing between them can observe the delayed shading:
+// one draw (functor, material, pass state), one facing, early depth (depth was tested and
+// written when each triangle was rasterized), no input attachments, no sample shading, and a
+// functor that declares batches_across_triangles(). Writes still happen in queue order.
 class QuadBatcher {
  public:
   QuadBatcher();
-  // Starts a triangle: cells and cell_depth are the tile's per-cell state (see tile_executor).
+  // True when a triangle of `ctx` may add its quads to the open batch.
+  bool continues(const TriangleContext& ctx) const {
+    return queued_ > 0 && across_triangles_ && &ctx.draw == &ctx_->draw &&
+           ctx.tri.setup.front_facing == ctx_->tri.setup.front_facing;
+  }
+  // Starts a triangle (flushing an open batch it cannot join): cells and cell_depth are the
+  // tile's per-cell state (see tile_executor), planes those of any cell the triangle covers
+  // (the gradients are per triangle). Every pointer must stay valid until the batch is flushed.
   void begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
-             const CellState* cells, const float* cell_depth);
-  void add(const QueuedQuad& quad) {
-    queue_[queued_++] = quad;
+             const CellState* cells, const float* cell_depth, const CellPlane* planes);
+  void add(int qx, int qy, int cell, int cell_x, int cell_y, QuadCoverage coverage, QuadCoverage passing) {
+    QueuedQuad& quad = queue_[queued_++];
+    quad.qx = qx;
+    quad.qy = qy;
+    quad.cell = cell;
+    quad.cell_x = cell_x;
+    quad.cell_y = cell_y;
+    quad.coverage = coverage;
+    quad.passing = passing;
     if (queued_ == kBatchQuads) flush();
   }
+  // Ends a triangle: its quads stay queued only if the next triangle may join them, and then
+  // keep their plane origins.
+  void end_triangle();
+  // Shades and writes every queued quad.
   void flush();
+  // Drops queued quads without shading them (a tile that threw may have left some).
+  void reset() { queued_ = live_from_ = 0; }
 
  private:
   void shade_invocation(int invocation);
-  void write_back(int q);
+  void write_back(int q, const BatchTriangle& triangle);
+  int end_of(int triangle) const {  // queue position after the triangle's last quad
+    return triangle + 1 < triangle_count_ ? triangles_[triangle + 1].first_quad : queued_;
+  }
   void write_back_single_sample();
 
-  const TriangleContext* ctx_ = nullptr;
+  std::optional<TriangleContext> ctx_;  // the batch's first triangle: draw, pass and facing
   TileMemory* memory_ = nullptr;
   TileCounters* counters_ = nullptr;
   const CellState* cells_ = nullptr;
   const float* cell_depth_ = nullptr;
-  bool opaque_writes_ = false;  // blending is a plain overwrite: outputs are quantised per batch
+  bool opaque_writes_ = false;     // blending is a plain overwrite: outputs are quantised per batch
+  bool across_triangles_ = false;  // the batch may take the next triangle's quads
   QueuedQuad queue_[kBatchQuads];
   int queued_ = 0;
+  int live_from_ = 0;  // queued quads from here on read their plane origins from cells_
+  // Every triangle but the last has a queued quad: at most one per quad, plus the open one.
+  BatchTriangle triangles_[kBatchQuads + 1];
+  int triangle_count_ = 0;
   int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1
   std::unique_ptr<FragmentBatch> batch_;
   std::unique_ptr<BatchOutput> outputs_[kMaxSamples];

@@ -18,7 +18,8 @@ namespace ontile {
 namespace {
 
 // Framebuffer fetch from this tile's memory (Vulkan subpassLoad): the quad passes its own
-// pixel coordinates, so only the current pixel is reachable.
+// pixel coordinates, so only the current pixel is reachable. One per subpass and tile, so a
+// batch shaded after later triangles were rasterized still holds a live one.
 class TileFetch final : public FramebufferFetch {
  public:
   TileFetch(const TileMemory& memory, const TileRect& rect, const std::vector<int>& inputs,
@@ -69,6 +70,7 @@ struct TileScratch {
   std::vector<CellState> cells;
   std::vector<float> cell_depth;  // per cell, per sample, 64 depths (row-major in the cell)
   std::vector<int> touched;       // cells the current triangle covered
+  std::vector<TileFetch> fetches;  // per subpass of the current tile
   QuadBatcher batcher;
 };
 
@@ -217,7 +219,8 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
   const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
   const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
   QuadBatcher& batcher = scratch.batcher;
-  batcher.begin(ctx, memory, counters, scratch.cells.data(), scratch.cell_depth.data());
+  batcher.begin(ctx, memory, counters, scratch.cells.data(), scratch.cell_depth.data(),
+                scratch.cells[scratch.touched[0]].planes);
   const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
   const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
   const bool whole_rows = samples == 1 && whole_quad_rows.load(std::memory_order_relaxed);
@@ -232,18 +235,18 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
       // in ascending x (the tile's row-major quad order) without stepping over empty quads.
       // Covered bits lie inside the tile and the bounding box (rasterize_cells' valid mask).
       const uint32_t rows = static_cast<uint32_t>(st.covered_any >> (ly * kCellSizePx)) & 0xFFFFu;
+      const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
+      uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
       const int cx = cells.first_x + ci * kCellSizePx;
       if (whole_rows && rows == 0xFFFFu &&
           (static_cast<uint32_t>(st.passing[0] >> (ly * kCellSizePx)) & 0xFFFFu) == 0xFFFFu) {
         // Every quad of the row covers and passes its 4 lanes: what the walk below queues
         // (coverage = passing = sample 0 of each lane, nothing rejected by depth).
         for (int lx = 0; lx < kCellSizePx; lx += 2) {
-          batcher.add(QueuedQuad{cx + lx, qy, cell, cx, cy, kWholeQuadSample0, kWholeQuadSample0});
+          batcher.add(cx + lx, qy, cell, cx, cy, kWholeQuadSample0, kWholeQuadSample0);
         }
         continue;
       }
-      const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
-      uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
       while (quads) {
         const int lx = std::countr_zero(quads);
         quads &= quads - 1;
@@ -259,16 +262,14 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
           // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
           if (!passing && !ctx.fragments) continue;
         }
-        batcher.add(QueuedQuad{qx, qy, cell, cx, cy, coverage, passing});
+        batcher.add(qx, qy, cell, cx, cy, coverage, passing);
       }
     }
   }
-  batcher.flush();
+  batcher.end_triangle();
 }
 
 }  // namespace
-
-void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
@@ -298,6 +299,11 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     for (int c = 0; c < cells.count(); ++c) refresh_hiz(scratch.hiz, cells, c, rect, memory);
   }
   const SamplePattern& pattern = *standard_sample_pattern(pass.samples);
+  scratch.batcher.reset();
+  scratch.fetches.clear();
+  for (const SubpassDesc& subpass : pass.subpasses) {
+    scratch.fetches.emplace_back(memory, rect, subpass.inputs, pass.depth_index);
+  }
   for (uint32_t e = begin; e < end; ++e) {
     const uint32_t ref = params.tile_entries[e];
     const BinnedTriangle& tri = params.triangle(ref);
@@ -306,11 +312,13 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     const int n = draw.vertex_shader->varying_count();
     counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
                                      3u * post_transform_vertex_bytes(n);
-    const TileFetch fetch(memory, rect, subpass.inputs, pass.depth_index);
     TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
-                              rect, &fetch, ref,
+                              rect, &scratch.fetches[tri.subpass], ref,
                               record_fragment_accesses ? &trace.fragments : nullptr);
     ctx.hiz_enabled = ctx.hiz_enabled && hierarchical_z;
+    // Quads of earlier triangles still queued are shaded and written before anything of a
+    // triangle that cannot join their batch happens.
+    if (!scratch.batcher.continues(ctx)) scratch.batcher.flush();
     scratch.touched.clear();
     rasterize_cells(ctx, cells, memory, counters, scratch);
     if (scratch.touched.empty()) continue;
@@ -324,8 +332,11 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
       for (int cell : scratch.touched) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
     }
   }
+  scratch.batcher.flush();
   store_tile(pass, rect, memory);
   trace.texture_granules.end = texel_buffer.size();
 }
+
+void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }
 
 }  // namespace ontile
