@@ -160,19 +160,10 @@ AovFrame render_aov_frame(const Scene& scene, const RenderSettings& settings,
       lambert.filtering != LambertOptions{}.filtering) {
     throw Error("--aov: of lambert's options only msaa applies to AOVs (they are D32F depth, float normals)");
   }
-  if (settings.width_px <= 0 || settings.height_px <= 0 || settings.width_px > kMaxTargetSizePx ||
-      settings.height_px > kMaxTargetSizePx) {
-    throw Error("image size " + std::to_string(settings.width_px) + "x" +
-                std::to_string(settings.height_px) + " outside 1.." + std::to_string(kMaxTargetSizePx));
-  }
+  const FrameInputs inputs = frame_inputs(scene, settings);
   AovFrame frame;
-  frame.camera = select_camera(scene, settings.camera_index);
+  frame.camera = inputs.camera;
   frame.context = std::make_unique<RenderContext>(settings.context);
-  FrameInputs inputs;
-  inputs.scene = &scene;
-  inputs.camera = frame.camera;
-  inputs.width_px = settings.width_px;
-  inputs.height_px = settings.height_px;
   frame.surfaces = render_aov_pass(*frame.context, inputs, kinds, &frame.report, lambert.msaa_samples);
   return frame;
 }

@@ -14,22 +14,27 @@ Camera select_camera(const Scene& scene, int camera_index) {
   return scene.cameras[camera_index];
 }
 
-RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings) {
+FrameInputs frame_inputs(const Scene& scene, const RenderSettings& settings) {
   if (settings.width_px <= 0 || settings.height_px <= 0 || settings.width_px > kMaxTargetSizePx ||
       settings.height_px > kMaxTargetSizePx) {
     throw Error("image size " + std::to_string(settings.width_px) + "x" +
                 std::to_string(settings.height_px) + " outside 1.." + std::to_string(kMaxTargetSizePx));
   }
-  RenderedFrame frame;
-  frame.camera = select_camera(scene, settings.camera_index);
-  std::unique_ptr<Pipeline> pipeline = make_pipeline(settings.pipeline);
-  frame.context = std::make_unique<RenderContext>(settings.context);
   FrameInputs inputs;
   inputs.scene = &scene;
-  inputs.camera = frame.camera;
+  inputs.camera = select_camera(scene, settings.camera_index);
   inputs.width_px = settings.width_px;
   inputs.height_px = settings.height_px;
   inputs.options = settings.options;
+  return inputs;
+}
+
+RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings) {
+  const FrameInputs inputs = frame_inputs(scene, settings);
+  RenderedFrame frame;
+  frame.camera = inputs.camera;
+  std::unique_ptr<Pipeline> pipeline = make_pipeline(settings.pipeline);
+  frame.context = std::make_unique<RenderContext>(settings.context);
   frame.outputs = pipeline->render(*frame.context, inputs);
   return frame;
 }

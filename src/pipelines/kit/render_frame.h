@@ -25,6 +25,8 @@ struct RenderedFrame {
 
 // Throws ontile::Error for an unknown pipeline, a camera index out of range or a bad size.
 Camera select_camera(const Scene& scene, int camera_index);
+// The pipeline's inputs for `settings`: size checked, camera selected, options copied.
+FrameInputs frame_inputs(const Scene& scene, const RenderSettings& settings);
 RenderedFrame render_frame(const Scene& scene, const RenderSettings& settings);
 
 }  // namespace ontile
