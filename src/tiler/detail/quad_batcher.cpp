@@ -125,7 +125,7 @@ void QuadBatcher::shade_invocation(int inv) {
   int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
   int runs = 0;
   int count = 0;
-  // Locals: the stores below are ints too, so members would be reloaded every quad.
+  // A local: the stores below are ints too, so the member would be reloaded every quad.
   const int triangles = triangle_count_;
   for (int t = 0; t < triangles; ++t) {
     const int first_slot = count;
