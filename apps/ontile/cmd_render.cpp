@@ -22,7 +22,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
-              render_graph = "off";
+              render_graph = "off", afbc = "off";
   bool allow_outside_files = false, progress = false, tiles = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
@@ -166,6 +166,7 @@ RenderSettings checked_settings(const RenderOptions& o) {
   settings.context.tiler.texture_cache.size_bytes = static_cast<uint32_t>(o.texture_cache_kib) * 1024;
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
+  settings.context.tiler.afbc = o.afbc == "on";
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".png" && ext != ".exr") {
     throw UsageError("--out " + o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
@@ -249,6 +250,10 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--texture-cache-kib", o->texture_cache_kib, "Texture cache size in KiB (16-way, 64-byte lines; default 256)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
+  cmd->add_option("--afbc", o->afbc,
+                  "Arm Frame Buffer Compression: on prices single-sample colour attachments of up to 32 bits "
+                  "per pixel at their compressed size (TBDR only; docs/memory-model.md); default off")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
   cmd->callback([o] { run_render(*o); });

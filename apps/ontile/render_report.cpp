@@ -26,6 +26,7 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
       {"texture_cache_bytes", tiler.texture_cache.size_bytes},
       {"parameter_cache_bytes", tiler.parameter_cache.size_bytes},
       {"render_target_cache_bytes", tiler.render_target_cache.size_bytes},
+      {"afbc", tiler.afbc},
       {"aov", run.aov.empty() ? nlohmann::json() : nlohmann::json(run.aov)},
       {"frames", run.frames ? nlohmann::json(*run.frames) : nlohmann::json()},
       {"tiles", run.tiles}};

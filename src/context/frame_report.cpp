@@ -1,6 +1,7 @@
 // Frame report totals, JSON and table (see frame_report.h).
 #include "context/frame_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -92,7 +93,9 @@ nlohmann::json pass_json(const PassReport& p) {
                            {"transient", a.transient},
                            {"bytes_loaded", a.bytes_loaded},
                            {"bytes_stored", a.bytes_stored},
-                           {"bytes_resolved", a.bytes_resolved}});
+                           {"bytes_resolved", a.bytes_resolved},
+                           {"afbc", a.afbc},
+                           {"afbc_bytes_saved", a.afbc_bytes_saved}});
   }
   const uint64_t pixels = static_cast<uint64_t>(p.width_px) * p.height_px;
   return {{"name", p.name},
@@ -190,10 +193,11 @@ std::string frame_report_table(const FrameReport& frame) {
       out << line;
     }
     for (const AttachmentTraffic& a : p.attachments) {
-      std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s\n",
+      std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s%s\n",
                     a.name.c_str(), format_name(a.format), a.transient ? "transient" : "memory",
                     mib(a.bytes_loaded).c_str(), mib(a.bytes_stored).c_str(),
-                    mib(a.bytes_resolved).c_str());
+                    mib(a.bytes_resolved).c_str(),
+                    a.afbc ? ("  AFBC saved " + mib(static_cast<uint64_t>(std::max<int64_t>(a.afbc_bytes_saved, 0)))).c_str() : "");
       out << line;
     }
     std::snprintf(line, sizeof line, "  %-20s %llu accesses, %llu hits, %llu misses, read %s\n", "texture cache",

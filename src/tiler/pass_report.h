@@ -51,6 +51,10 @@ struct AttachmentTraffic {
   uint64_t bytes_loaded = 0;
   uint64_t bytes_stored = 0;    // Store of all samples
   uint64_t bytes_resolved = 0;  // Resolve writes of the averaged pixel
+  // AFBC (TilerConfig::afbc): whether any of the above was priced compressed, and the bytes that
+  // saved against the uncompressed size (negative when headers outweigh the savings).
+  bool afbc = false;
+  int64_t afbc_bytes_saved = 0;
 };
 
 // One tile's share of a pass: its primitive list, fragment work and the external bytes charged

@@ -11,6 +11,7 @@
 
 #include "raster/sample_pattern.h"
 #include "raster/texture.h"
+#include "tiler/detail/attachment_pricing.h"
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/detail/tile_executor.h"
 #include "tiler/detail/trace_buffers.h"
@@ -193,27 +194,6 @@ void attribute_texture_misses(const TextureReplayDetail& detail, uint64_t line_b
             });
 }
 
-// A tile loads and stores its own area of every attachment (TBDR): its share of the pass's
-// attachment bytes, so the tiles' shares sum to the pass's.
-void charge_attachment_bytes_per_tile(const RenderPassDesc& pass, const TileGrid& grid,
-                                      PassReport& report) {
-  for (int tile = 0; tile < grid.tile_count(); ++tile) {
-    const int x0 = (tile % grid.tiles_x()) * grid.tile_width_px;
-    const int y0 = (tile / grid.tiles_x()) * grid.tile_height_px;
-    const uint64_t pixels = static_cast<uint64_t>(std::min(grid.tile_width_px, grid.width_px - x0)) *
-                            static_cast<uint64_t>(std::min(grid.tile_height_px, grid.height_px - y0));
-    TileStats& stats = report.tile_stats[tile];
-    for (size_t a = 0; a < pass.attachments.size(); ++a) {
-      const AttachmentTraffic& t = report.attachments[a];
-      const uint64_t sample_bytes = pixels * pass.samples * bytes_per_pixel(t.format);
-      const uint64_t pixel_bytes = pixels * bytes_per_pixel(t.format);
-      if (t.bytes_loaded) stats.bytes_loaded += sample_bytes;
-      if (t.bytes_stored) stats.bytes_stored += sample_bytes;
-      if (t.bytes_resolved) stats.bytes_stored += pixel_bytes;
-    }
-  }
-}
-
 }  // namespace
 
 void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
@@ -263,11 +243,13 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   report.binning_ms = ms_since(bin_start);
   report.geometry = params.counters;
 
+  // AFBC prices loads at the size of the surfaces' contents before the pass.
+  const bool imr = config.architecture == Architecture::Imr;
+  const AttachmentPricing pricing(pass, config.afbc && !imr);
   const auto tiles_start = std::chrono::steady_clock::now();
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
   const int attachment_count = static_cast<int>(pass.attachments.size());
-  const bool imr = config.architecture == Architecture::Imr;
   const TraceBuffersLease texel_buffers;
   std::vector<TileTrace> traces(grid.tile_count());
   report.tile_stats.resize(grid.tile_count());
@@ -294,29 +276,8 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     report.tiles.parameter_bytes_read = report.parameter_cache.bytes_read;
   }
 
-  // Every tile loads and stores its whole area, so attachment traffic is the surface size.
-  const uint64_t pixels = static_cast<uint64_t>(pass.width_px) * pass.height_px;
-  for (const AttachmentDesc& d : pass.attachments) {
-    AttachmentTraffic t;
-    t.name = d.name;
-    t.format = d.format;
-    t.transient = d.surface == nullptr;
-    const uint64_t all_samples = pixels * pass.samples * bytes_per_pixel(d.format);
-    if (d.load == LoadAction::Load && d.surface) t.bytes_loaded = all_samples;
-    if ((d.store == StoreAction::Store || d.store == StoreAction::StoreAndResolve) && d.surface) {
-      t.bytes_stored = all_samples;
-    }
-    if ((d.store == StoreAction::Resolve || d.store == StoreAction::StoreAndResolve) &&
-        d.resolve_surface) {
-      t.bytes_resolved = pixels * bytes_per_pixel(d.format);
-    }
-    report.attachments.push_back(t);
-  }
-  if (imr) {
-    apply_imr_model(pass, config, traces, report);
-  } else {
-    charge_attachment_bytes_per_tile(pass, grid, report);
-  }
+  pricing.price(grid, report, !imr);
+  if (imr) apply_imr_model(pass, config, traces, report);
   return report;
 }
 

@@ -26,6 +26,9 @@ struct TilerConfig {
   // image bit and no traffic count, only time and the cells_hiz_rejected counter; off is for
   // measuring what it saves.
   bool hierarchical_z = true;
+  // Arm Frame Buffer Compression (memory/afbc.h): single-sample colour attachments of up to 32
+  // bits per pixel are loaded, stored and resolved at their compressed size. TBDR only.
+  bool afbc = false;
 };
 
 // Runs on the calling thread's oneTBB arena (callers pick the thread count with a
