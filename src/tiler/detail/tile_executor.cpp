@@ -215,12 +215,17 @@ bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
       scratch.touched.size() != static_cast<size_t>(cells.count())) {
     return false;
   }
+  const int x1 = rect.x0 + rect.width, y1 = rect.y0 + rect.height;
   for (int cj = 0; cj < cells.cells_y; ++cj) {
+    const int cy = cells.first_y + cj * kCellSizePx;
     for (int ci = 0; ci < cells.cells_x; ++ci) {
+      const int cx = cells.first_x + ci * kCellSizePx;
       const CellState& st = scratch.cells[cj * cells.cells_x + ci];
-      const CellMask inside = cell_rect_mask(cells.first_x + ci * kCellSizePx,
-                                             cells.first_y + cj * kCellSizePx, rect.x0, rect.y0,
-                                             rect.x0 + rect.width, rect.y0 + rect.height);
+      // Cells inside the tile (all of them for aligned tiles) need no mask of the tile's part.
+      const bool whole_cell = cx >= rect.x0 && cy >= rect.y0 && cx + kCellSizePx <= x1 &&
+                              cy + kCellSizePx <= y1;
+      const CellMask inside = whole_cell ? ~CellMask{0}
+                                         : cell_rect_mask(cx, cy, rect.x0, rect.y0, x1, y1);
       if (st.covered_any != inside || st.passing[0] != inside) return false;
     }
   }
