@@ -219,9 +219,10 @@ hn::Vec<hn::RebindToSigned<DF>> unorm8_code(DF df, hn::Vec<DF> v) {
                                                   hn::Set(di, 0x800000)));
   const auto scaled = hn::Mul(significand, hn::Set(du, 255u));
   const auto in_range = hn::Gt(exponent, hn::Set(di, 117));
-  // 149 - E, kept within [0, 31] where the lane is not in range (its code is replaced).
-  const auto shift = hn::BitCast(du, hn::IfThenElse(in_range, hn::Sub(hn::Set(di, 149), exponent),
-                                                    hn::Set(di, 31)));
+  // 149 - E, in [0, 31] for E in [118, 149]; clamped there for the other lanes (their code is
+  // replaced), so no lane shifts by 32 or more (undefined on the scalar targets).
+  const auto shift = hn::BitCast(
+      du, hn::Min(hn::Max(hn::Sub(hn::Set(di, 149), exponent), hn::Zero(di)), hn::Set(di, 31)));
   const auto code = hn::BitCast(di, hn::ShiftRight<1>(hn::Add(hn::Shr(scaled, shift), hn::Set(du, 1u))));
   const auto saturated = hn::RebindMask(di, hn::Ge(v, hn::Set(df, 1.0f)));  // false for NaN
   const auto positive = hn::RebindMask(di, hn::Gt(v, hn::Zero(df)));      // false for NaN
