@@ -151,8 +151,8 @@ class QuadBatcher {
     return triangle + 1 < triangle_count_ ? triangles_[triangle + 1].first_quad : queued_;
   }
   void write_back_single_sample();
-  // One whole batch of add_whole_rect: the quads at (qx, qy) onwards in row-major order
-  // (advanced past the batch), the rect being quads_x quads wide.
+  // One whole batch of add_whole_rect: the kBatchQuads quads of `rect` from (qx, qy) on in
+  // row-major order; qx, qy are advanced past them.
   void shade_whole_batch(const TileRect& rect, int& qx, int& qy, int first_cell_x,
                          int first_cell_y, int cells_x);
 
