@@ -82,54 +82,6 @@ void CellDepthKernel(float origin, float dx, float dy, float off_x, float off_y,
   }
 }
 
-// Fragments [i, i + Lanes(d)) of interpolate_fragments.
-template <class D>
-HWY_INLINE void interpolate_vector(D d, const InterpolationInput& in, size_t i, float* depth_out,
-                                   float* varyings_out, int stride) {
-  const auto zero = hn::Zero(d);
-  const auto one = hn::Set(d, 1.0f);
-  const auto fx = hn::LoadU(d, in.fx + i);
-  const auto fy = hn::LoadU(d, in.fy + i);
-  const auto l1 = hn::Add(hn::Add(hn::LoadU(d, in.l1_origin + i), hn::Mul(hn::Set(d, in.l1_dx), fx)),
-                          hn::Mul(hn::Set(d, in.l1_dy), fy));
-  const auto l2 = hn::Add(hn::Add(hn::LoadU(d, in.l2_origin + i), hn::Mul(hn::Set(d, in.l2_dx), fx)),
-                          hn::Mul(hn::Set(d, in.l2_dy), fy));
-  auto z = hn::Add(hn::Add(hn::LoadU(d, in.z_origin + i), hn::Mul(hn::Set(d, in.z_dx), fx)),
-                   hn::Mul(hn::Set(d, in.z_dy), fy));
-  z = hn::IfThenElse(hn::Lt(z, zero), zero, z);
-  z = hn::IfThenElse(hn::Gt(z, one), one, z);
-  hn::StoreU(z, d, depth_out + i);
-  const auto l0 = hn::Sub(hn::Sub(one, l1), l2);
-  // Perspective correction: lambda_i / w_i, normalised (the reciprocal is a true division).
-  const auto q0 = hn::Mul(l0, hn::Set(d, in.inv_w[0]));
-  const auto q1 = hn::Mul(l1, hn::Set(d, in.inv_w[1]));
-  const auto q2 = hn::Mul(l2, hn::Set(d, in.inv_w[2]));
-  const auto inv_sum = hn::Div(one, hn::Add(hn::Add(q0, q1), q2));
-  const auto w1 = hn::Mul(q1, inv_sum);
-  const auto w2 = hn::Mul(q2, inv_sum);
-  // v0 + w1 (v1 - v0) + w2 (v2 - v0): a varying equal at the three vertices (a flat
-  // attribute, a material id) comes out exactly, whatever the rounding of the weights.
-  for (int k = 0; k < in.varying_count; ++k) {
-    const float v0 = in.vertex_varyings[0][k];
-    const auto v = hn::Add(hn::Add(hn::Set(d, v0), hn::Mul(w1, hn::Set(d, in.vertex_varyings[1][k] - v0))),
-                           hn::Mul(w2, hn::Set(d, in.vertex_varyings[2][k] - v0)));
-    hn::StoreU(v, d, varyings_out + static_cast<size_t>(k) * stride + i);
-  }
-}
-
-// Whole vectors, then the remaining quads on 4-lane vectors: the same IEEE operations per lane
-// at any width, so the bits do not depend on where a run of fragments starts or ends.
-void InterpolateKernel(const InterpolationInput& in, int count, float* depth_out,
-                       float* varyings_out, int stride) {
-  const hn::ScalableTag<float> d;
-  const size_t n = hn::Lanes(d);
-  const size_t total = static_cast<size_t>(count);
-  size_t i = 0;
-  for (; i + n <= total; i += n) interpolate_vector(d, in, i, depth_out, varyings_out, stride);
-  const hn::CappedTag<float, 4> d4;  // one quad
-  for (; i < total; i += hn::Lanes(d4)) interpolate_vector(d4, in, i, depth_out, varyings_out, stride);
-}
-
 template <class D, class V>
 auto compare(D d, CompareOp op, V incoming, V stored) {
   switch (op) {
@@ -227,7 +179,6 @@ namespace ontile {
 
 HWY_EXPORT(CoverageKernel);
 HWY_EXPORT(CellDepthKernel);
-HWY_EXPORT(InterpolateKernel);
 HWY_EXPORT(DepthTestKernel);
 HWY_EXPORT(DepthRangeKernel);
 HWY_EXPORT(TargetNameKernel);
@@ -357,11 +308,6 @@ void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, floa
   const float off_x = static_cast<float>(sx - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
   const float off_y = static_cast<float>(sy - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
   HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, off_x, off_y, out);
-}
-
-void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
-                           float* varyings_out, int varyings_stride) {
-  HWY_DYNAMIC_DISPATCH(InterpolateKernel)(in, count, depth_out, varyings_out, varyings_stride);
 }
 
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],

@@ -82,6 +82,24 @@ struct InterpolationInput {
 void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
                            float* varyings_out, int varyings_stride);
 
+// interpolate_fragments for whole quads, without per-fragment inputs: quad q's fragments
+// 4q .. 4q + 3 (lanes (0,0), (1,0), (0,1), (1,1)) sit at offsets (ox[q] + (lane & 1),
+// oy[q] + (lane >> 1)) pixels from its cell's top-left pixel centre and use its cell's plane
+// origins l1[q], l2[q], z[q]. The results are bit for bit those of interpolate_fragments given
+// those offsets (as floats) and origins per fragment; `in`'s per-fragment pointers are unused.
+// Every per-quad array must be readable up to quad_count + kQuadOriginsPadding entries.
+struct QuadOrigins {
+  const int32_t* ox;
+  const int32_t* oy;
+  const float* l1;
+  const float* l2;
+  const float* z;
+};
+constexpr int kQuadOriginsPadding = 16;
+void interpolate_whole_quads(const InterpolationInput& in, const QuadOrigins& quads,
+                             int quad_count, float* depth_out, float* varyings_out,
+                             int varyings_stride);
+
 // Depth test of the covered pixels of one cell of single-sample tile memory whose rows are
 // `stride` floats apart: stored[(ly * stride) + lx] for the cell's `cols` x `rows` pixels.
 // Returns the candidates that pass `op` (all candidates when !test) and, when `write`, stores

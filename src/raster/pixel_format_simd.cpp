@@ -1,6 +1,6 @@
 // SIMD channel conversions (see pixel_format_simd.h), compiled per target by Highway's
 // foreach_target. UNORM conversion runs in double exactly as the scalar float_to_unorm does
-// (the product value * (2^bits - 1) is exact in double); sRGB uses the scalar path's tables
+// (the product value * (2^bits - 1) is exact in double), 8-bit UNORM in exact integers; sRGB uses the scalar path's tables
 // through gathers. Only IEEE operations and table reads: every target gives the same bits.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/pixel_format_simd.cpp"
@@ -204,7 +204,54 @@ void DecodeHalfKernel(const uint8_t* src, int count, float* values) {
   }
 }
 
+// float_to_unorm(v, 8) on 32-bit lanes, exactly, as integers: a positive normal v below 1 is
+// m 2^(E - 150) (m the 24-bit significand, E the biased exponent), so 255 v = x / 2^sh with
+// x = 255 m < 2^32 and sh = 150 - E, and floor(255 v + 1/2) = floor((floor(x / 2^(sh - 1)) + 1)
+// / 2) (adding 1 before halving commutes with the floor). Below 2^-9 (E < 118, where the shift
+// would pass 31) 255 v < 1/2 gives 0; NaN, v <= 0 and subnormals give 0; v >= 1 gives 255.
+template <class DF>
+hn::Vec<hn::RebindToSigned<DF>> unorm8_code(DF df, hn::Vec<DF> v) {
+  const hn::RebindToSigned<DF> di;
+  const hn::RebindToUnsigned<DF> du;
+  const auto bits = hn::BitCast(di, v);
+  const auto exponent = hn::ShiftRight<23>(bits);  // the sign bit only where v <= 0 (zeroed below)
+  const auto significand = hn::BitCast(du, hn::Or(hn::And(bits, hn::Set(di, 0x7FFFFF)),
+                                                  hn::Set(di, 0x800000)));
+  const auto scaled = hn::Mul(significand, hn::Set(du, 255u));
+  const auto in_range = hn::Gt(exponent, hn::Set(di, 117));
+  // 149 - E, in [0, 31] for E in [118, 149]; clamped there for the other lanes (their code is
+  // replaced), so no lane shifts by 32 or more (undefined on the scalar targets).
+  const auto shift = hn::BitCast(
+      du, hn::Min(hn::Max(hn::Sub(hn::Set(di, 149), exponent), hn::Zero(di)), hn::Set(di, 31)));
+  const auto code = hn::BitCast(di, hn::ShiftRight<1>(hn::Add(hn::Shr(scaled, shift), hn::Set(du, 1u))));
+  const auto saturated = hn::RebindMask(di, hn::Ge(v, hn::Set(df, 1.0f)));  // false for NaN
+  const auto positive = hn::RebindMask(di, hn::Gt(v, hn::Zero(df)));      // false for NaN
+  return hn::IfThenElseZero(positive, hn::IfThenElse(saturated, hn::Set(di, 255),
+                                                     hn::IfThenElseZero(in_range, code)));
+}
+
+// 8-bit UNORM quantisation on float lanes: the code as above, then code / 255 as one IEEE float
+// division, which rounds as unorm_to_float's double division does followed by the rounding to
+// float (c / 255 for 0 < c < 255 is no float midpoint and lies more than 2^-40 relatively from
+// every one, far beyond double's 2^-53, so the double rounding cannot move it).
+void QuantizeUnorm8Lanes(float* values, int count) {
+  const hn::ScalableTag<float> df;
+  const size_t n = hn::Lanes(df);
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto code = unorm8_code(df, hn::LoadU(df, values + i));
+    hn::StoreU(hn::Div(hn::ConvertTo(df, code), hn::Set(df, 255.0f)), df, values + i);
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    values[i] = unorm_to_float(float_to_unorm(values[i], 8), 8);
+  }
+}
+
 void QuantizeUnormKernel(float* values, int count, int bits) {
+  if (bits == 8) {
+    QuantizeUnorm8Lanes(values, count);
+    return;
+  }
   const hn::ScalableTag<double> dd;
   const hn::Rebind<float, decltype(dd)> df;
   const size_t n = hn::Lanes(dd);
@@ -220,15 +267,12 @@ void QuantizeUnormKernel(float* values, int count, int bits) {
 }
 
 void EncodeUnorm8Kernel(const float* values, int count, uint8_t* dst) {
-  const hn::ScalableTag<double> dd;
-  const hn::Rebind<float, decltype(dd)> df;
-  const hn::Rebind<int32_t, decltype(dd)> di;
-  const hn::Rebind<uint8_t, decltype(dd)> d8;
-  const size_t n = hn::Lanes(dd);
+  const hn::ScalableTag<float> df;
+  const hn::Rebind<uint8_t, decltype(df)> d8;
+  const size_t n = hn::Lanes(df);
   size_t i = 0;
   for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = unorm_code(dd, hn::PromoteTo(dd, hn::LoadU(df, values + i)), 255.0);
-    hn::StoreU(hn::DemoteTo(d8, hn::DemoteTo(di, code)), d8, dst + i);
+    hn::StoreU(hn::DemoteTo(d8, unorm8_code(df, hn::LoadU(df, values + i))), d8, dst + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
     dst[i] = static_cast<uint8_t>(float_to_unorm(values[i], 8));

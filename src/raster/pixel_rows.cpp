@@ -35,6 +35,12 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
       quantize_unorm_simd(a, count, 8);  // alpha is always linear
       return;
     case PixelFormat::RGBA8_UNORM:
+      // Channel arrays one after another (a whole batch's output): one run of 4 * count values.
+      if (g == r + count && b == g + count && a == b + count) {
+        quantize_unorm_simd(r, 4 * count, 8);
+        return;
+      }
+      [[fallthrough]];
     case PixelFormat::RGB10A2_UNORM: {
       const int bits = format == PixelFormat::RGBA8_UNORM ? 8 : 10;
       quantize_unorm_simd(r, count, bits);

@@ -37,6 +37,10 @@ inline int lane_count(uint8_t lanes) {
   return static_cast<int>((0x4332322132212110ull >> (4u * (lanes & 0xFu))) & 0xFu);
 }
 
+// Coverage (and passing) of a quad whose 4 lanes hold sample 0, at one sample per pixel.
+constexpr QuadCoverage kWholeQuadSample0 = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
+                                           (1u << (3 * kMaxSamples));
+
 // What one triangle of a tile needs to know about its draw, pass and state.
 struct TriangleContext {
   const RenderPassDesc& pass;
@@ -123,6 +127,15 @@ class QuadBatcher {
     quad.passing = passing;
     if (queued_ == kBatchQuads) flush();
   }
+  // The whole-tile path (full-screen triangles; whole_tile_batches.cpp): called right after
+  // begin() for a triangle that covers every pixel of `rect` (even origin and size) at one
+  // sample, every pixel having passed early depth. Shades and writes the rect's quads in the
+  // tile's row-major order kBatchQuads at a time, the batches add() per quad would form, without
+  // queueing them, and queues the last partial batch with add(). Returns false, doing nothing,
+  // unless the batch is empty and the draw shades one opaque invocation per pixel with early
+  // depth and no fragment recording. The cells grid: cell (i, j) has its top-left pixel at
+  // (first_cell_x + 8 i, first_cell_y + 8 j), index j * cells_x + i in cells_.
+  bool add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y, int cells_x);
   // Ends a triangle: its quads stay queued only if the next triangle may join them, and then
   // keep their plane origins.
   void end_triangle();
@@ -138,6 +151,10 @@ class QuadBatcher {
     return triangle + 1 < triangle_count_ ? triangles_[triangle + 1].first_quad : queued_;
   }
   void write_back_single_sample();
+  // One whole batch of add_whole_rect: the kBatchQuads quads of `rect` from (qx, qy) on in
+  // row-major order; qx, qy are advanced past them.
+  void shade_whole_batch(const TileRect& rect, int& qx, int& qy, int first_cell_x,
+                         int first_cell_y, int cells_x);
 
   std::optional<TriangleContext> ctx_;  // the batch's first triangle: draw, pass and facing
   TileMemory* memory_ = nullptr;
@@ -161,6 +178,12 @@ class QuadBatcher {
   // write_back_single_sample's quads whose lanes all pass: first fragment, tile pixel index.
   int32_t full_first_fragment_[kBatchQuads];
   uint32_t full_pixel_[kBatchQuads];
+  // shade_whole_batch's interpolation inputs per quad (interpolate_whole_quads).
+  alignas(64) int32_t quad_ox_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) int32_t quad_oy_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float quad_l1_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float quad_l2_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float quad_z_[kBatchQuads + kQuadOriginsPadding] = {};
 };
 
 }  // namespace ontile

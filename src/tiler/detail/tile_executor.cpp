@@ -44,10 +44,8 @@ class TileFetch final : public FramebufferFetch {
 };
 
 std::atomic<bool> whole_quad_rows{true};
-
-// Coverage (and passing) of a quad whose 4 lanes hold sample 0, at one sample per pixel.
-constexpr QuadCoverage kWholeQuadSample0 = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
-                                           (1u << (3 * kMaxSamples));
+std::atomic<bool> whole_tiles{true};
+std::atomic<uint64_t> whole_tiles_taken{0};
 
 // The 4 lanes of the quad whose top-left pixel is bit (ly * 8 + lx) of a cell mask.
 inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
@@ -207,6 +205,33 @@ void count_unshaded_cells(const TriangleContext& ctx, const TileScratch& scratch
   }
 }
 
+// True when the triangle covers every pixel of the tile at one sample and every pixel passed
+// early depth (full-screen triangles): every cell of the tile was visited for this triangle
+// (the others hold an earlier triangle's state) and is covered and passing inside the tile.
+bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
+                       const TileScratch& scratch) {
+  const TileRect& rect = ctx.rect;
+  if (ctx.pattern.count != 1 || ctx.late_z ||
+      scratch.touched.size() != static_cast<size_t>(cells.count())) {
+    return false;
+  }
+  const int x1 = rect.x0 + rect.width, y1 = rect.y0 + rect.height;
+  for (int cj = 0; cj < cells.cells_y; ++cj) {
+    const int cy = cells.first_y + cj * kCellSizePx;
+    for (int ci = 0; ci < cells.cells_x; ++ci) {
+      const int cx = cells.first_x + ci * kCellSizePx;
+      const CellState& st = scratch.cells[cj * cells.cells_x + ci];
+      // Cells inside the tile (all of them for aligned tiles) need no mask of the tile's part.
+      const bool whole_cell = cx >= rect.x0 && cy >= rect.y0 && cx + kCellSizePx <= x1 &&
+                              cy + kCellSizePx <= y1;
+      const CellMask inside = whole_cell ? ~CellMask{0}
+                                         : cell_rect_mask(cx, cy, rect.x0, rect.y0, x1, y1);
+      if (st.covered_any != inside || st.passing[0] != inside) return false;
+    }
+  }
+  return true;
+}
+
 // Walks the triangle's quads in the tile's row-major order (the order the texture and IMR
 // models replay) and hands the surviving ones to the batcher.
 void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
@@ -224,6 +249,13 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
   const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
   const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
   const bool whole_rows = samples == 1 && whole_quad_rows.load(std::memory_order_relaxed);
+  if (whole_rows && whole_tiles.load(std::memory_order_relaxed) &&
+      covers_whole_tile(ctx, cells, scratch) &&
+      batcher.add_whole_rect(rect, cells.first_x, cells.first_y, cells.cells_x)) {
+    whole_tiles_taken.fetch_add(1, std::memory_order_relaxed);
+    batcher.end_triangle();
+    return;
+  }
   for (int qy = y_begin; qy < y_end; qy += 2) {
     const int cj = (qy - cells.first_y) / kCellSizePx;
     const int ly = qy & (kCellSizePx - 1);
@@ -338,5 +370,7 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
 }
 
 void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }
+void set_whole_tiles(bool enabled) { whole_tiles.store(enabled); }
+uint64_t whole_tiles_shaded() { return whole_tiles_taken.load(); }
 
 }  // namespace ontile

@@ -27,4 +27,13 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
 // (same images and counters). Set between frames only.
 void set_whole_quad_rows(bool enabled);
 
+// Triangles covering a whole tile at one sample, every pixel passing early depth (full-screen
+// passes), are shaded in whole batches straight from the tile's quad grid
+// (QuadBatcher::add_whole_rect) rather than queued quad by quad. Needs whole quad rows; on by
+// default; tests turn it off to compare (same images and counters). Set between frames only.
+void set_whole_tiles(bool enabled);
+// How many times (since the process started) a triangle's tile took that path, so tests can
+// tell that a frame exercised it.
+uint64_t whole_tiles_shaded();
+
 }  // namespace ontile

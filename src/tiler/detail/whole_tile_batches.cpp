@@ -1,0 +1,146 @@
+// The batcher's whole-tile path (see QuadBatcher::add_whole_rect): a triangle covering a whole
+// tile (full-screen passes) is shaded batch by batch straight from the tile's quad grid, with
+// no per-quad queue entries, lane masks, slots or per-fragment interpolation inputs, and written
+// back without per-quad checks. Every value and counter is the one flush() would produce for the
+// same quads queued by add().
+#include <bit>
+#include <cstring>
+
+#include "tiler/detail/quad_batcher.h"
+#include "tiler/detail/quad_store_simd.h"
+
+namespace ontile {
+
+bool QuadBatcher::add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y,
+                                 int cells_x) {
+  const TriangleContext& ctx = *ctx_;
+  if (queued_ != 0 || ctx.pattern.count != 1 || ctx.late_z || ctx.per_sample || ctx.fragments ||
+      !opaque_writes_ || !ctx.draw.fragment_shader || (rect.x0 | rect.y0 | rect.width | rect.height) & 1) {
+    return false;
+  }
+  const int quads_x = rect.width / 2;
+  const int quads = quads_x * (rect.height / 2);
+  const int whole_batches = quads / kBatchQuads;
+  int qx = rect.x0, qy = rect.y0;
+  for (int batch = 0; batch < whole_batches; ++batch) {
+    shade_whole_batch(rect, qx, qy, first_cell_x, first_cell_y, cells_x);
+  }
+  // The rest is what add() would leave queued at the triangle's end.
+  for (int q = whole_batches * kBatchQuads; q < quads; ++q) {
+    const int ci = (qx - first_cell_x) / kCellSizePx, cj = (qy - first_cell_y) / kCellSizePx;
+    add(qx, qy, cj * cells_x + ci, first_cell_x + ci * kCellSizePx, first_cell_y + cj * kCellSizePx,
+        kWholeQuadSample0, kWholeQuadSample0);
+    qx += 2;
+    if (qx == rect.x0 + rect.width) {
+      qx = rect.x0;
+      qy += 2;
+    }
+  }
+  return true;
+}
+
+// shade_invocation and write_back_single_sample for kBatchQuads whole quads of the open
+// triangle (triangles_[0], whose planes are still in the cells): every lane active and passing.
+void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int first_cell_x,
+                                    int first_cell_y, int cells_x) {
+  const TriangleContext& ctx = *ctx_;
+  const BatchTriangle& t = triangles_[0];
+  FragmentBatch& b = *batch_;
+  BatchOutput& out = *outputs_[0];
+  const uint32_t primitive_id = t.tri->primitive_id;
+  // Locals, not the members or the references: the stores below are ints and floats too.
+  const int x0 = rect.x0, row_end = rect.x0 + rect.width, width = memory_->width();
+  const CellState* const cells = cells_;
+  int x = qx, y = qy;
+  int cell_row = (y - first_cell_y) / kCellSizePx * cells_x;  // cell index of the row's first cell
+  int oy = (y - first_cell_y) % kCellSizePx;                   // quad row inside its cell
+  uint32_t pixel = static_cast<uint32_t>((y - rect.y0) * width + (x - x0));
+  for (int i = 0; i < kBatchQuads; ++i) {
+    const int lx = x - first_cell_x;  // >= 0: the cells grid starts at or left of the tile
+    const CellPlane* planes = cells[cell_row + static_cast<unsigned>(lx) / kCellSizePx].planes;
+    b.quad_x_px[i] = x;
+    b.quad_y_px[i] = y;
+    b.lane_mask[i] = 0xF;
+    b.quad_primitive_id[i] = primitive_id;
+    quad_ox_[i] = static_cast<int32_t>(static_cast<unsigned>(lx) % kCellSizePx);
+    quad_oy_[i] = oy;
+    quad_l1_[i] = planes[0].origin;
+    quad_l2_[i] = planes[1].origin;
+    quad_z_[i] = planes[2].origin;
+    full_first_fragment_[i] = i * kQuadLanes;
+    full_pixel_[i] = pixel;
+    x += 2;
+    pixel += 2;
+    if (x == row_end) {  // the next quad row: two pixel rows down
+      x = x0;
+      y += 2;
+      pixel = static_cast<uint32_t>((y - rect.y0) * width);
+      cell_row = (y - first_cell_y) / kCellSizePx * cells_x;
+      oy = (y - first_cell_y) % kCellSizePx;
+    }
+  }
+  qx = x;
+  qy = y;
+  const int n = ctx.varying_count;
+  const InterpolationInput in{nullptr, nullptr, nullptr, nullptr, nullptr,
+                              t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
+                              {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
+                              {t.varyings, t.varyings + n, t.varyings + 2 * n},
+                              n};
+  interpolate_whole_quads(in, QuadOrigins{quad_ox_, quad_oy_, quad_l1_, quad_l2_, quad_z_},
+                          kBatchQuads, b.depth, &b.varyings[0][0], kBatchFragments);
+  b.quad_count = kBatchQuads;
+  b.varying_count = n;
+  b.color_output_count = static_cast<int>(ctx.subpass.color_outputs.size());
+  b.front_facing = ctx.tri.setup.front_facing;
+  b.primitive_id = primitive_id;
+  b.sample = -1;
+  b.fetch = ctx.fetch;
+  // As shade_invocation: unwritten outputs are zero; opaque outputs quantised per batch.
+  for (int k = 0; k < b.color_output_count; ++k) {
+    std::memset(out.color[k], 0, sizeof(out.color[k]));
+  }
+  out.discard_mask = 0;
+  ctx.draw.fragment_shader->shade_batch(b, out);
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  for (int k = 0; k < b.color_output_count; ++k) {
+    const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
+    quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
+                    kBatchFragments);
+  }
+  counters_->fragments_shaded += kBatchFragments;
+  // A functor without may_discard() that discards anyway loses those lanes' writes, as in
+  // write_back_single_sample; whole quads are stored on SIMD lanes, the others lane by lane.
+  int full_quads = kBatchQuads;
+  if (out.discard_mask == 0) {
+    counters_->samples_written += kBatchFragments;
+  } else {
+    full_quads = 0;
+    for (int i = 0; i < kBatchQuads; ++i) {
+      const uint8_t lanes = static_cast<uint8_t>(~(out.discard_mask >> (i * kQuadLanes)) & 0xFu);
+      counters_->samples_written += static_cast<uint64_t>(lane_count(lanes));
+      if (lanes == 0xF) {
+        full_first_fragment_[full_quads] = full_first_fragment_[i];
+        full_pixel_[full_quads++] = full_pixel_[i];
+        continue;
+      }
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        if (!((lanes >> lane) & 1u)) continue;
+        const size_t p = full_pixel_[i] + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
+        const int f = i * kQuadLanes + lane;
+        for (size_t k = 0; k < outputs.size(); ++k) {
+          memory_->color_plane(outputs[k])[p] = {out.color[k][0][f], out.color[k][1][f],
+                                                 out.color[k][2][f], out.color[k][3][f]};
+        }
+      }
+    }
+  }
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                      out.color[k][3]};
+    store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
+                     memory_->color_plane(outputs[k]));
+  }
+}
+
+}  // namespace ontile
