@@ -29,6 +29,11 @@ class AovShader final : public FragmentShader {
   AovShader(std::unique_ptr<FragmentShader> material_shader, std::vector<AovKind> kinds)
       : material_(std::move(material_shader)), kinds_(std::move(kinds)) {}
   bool may_discard() const override { return material_ && material_->may_discard(); }
+  // Outputs per quad (primitive ids per quad); the material's functor, which reads texels,
+  // runs only when it may discard, so then it must allow batches across triangles too.
+  bool batches_across_triangles() const override {
+    return !may_discard() || material_->batches_across_triangles();
+  }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     if (may_discard()) {
@@ -47,7 +52,8 @@ class AovShader final : public FragmentShader {
           break;
         case AovKind::PrimitiveId:
           for (int f = 0; f < count; ++f) {
-            out.set(target, f, glm::vec4(static_cast<float>(batch.primitive_id), 0.0f, 0.0f, 1.0f));
+            const float id = static_cast<float>(batch.quad_primitive_id[f / kQuadLanes]);
+            out.set(target, f, glm::vec4(id, 0.0f, 0.0f, 1.0f));
           }
           break;
         case AovKind::Normal: {

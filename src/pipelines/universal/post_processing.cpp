@@ -23,6 +23,7 @@ class CopyShader final : public FragmentShader {
  public:
   CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
       : source_(std::move(source)), sampler_(sampler) {}
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
     if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
@@ -49,6 +50,7 @@ class TonemapShader final : public FragmentShader {
  public:
   TonemapShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler, float exposure)
       : source_(std::move(source)), sampler_(sampler), exposure_(exposure) {}
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     for (int q = 0; q < batch.quad_count; ++q) {
       glm::vec2 uv[kQuadLanes];
