@@ -4,6 +4,7 @@
 // functor. Template flags are the keyword variants (_BASEMAP, _ALPHATEST_ON, _EMISSION) and
 // whether a main-light shadow map is bound (URP's _MAIN_LIGHT_SHADOWS).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -11,6 +12,7 @@
 
 #include "pipelines/universal/main_light_shadows.h"
 #include "pipelines/universal/main_light_shadows_batch.h"
+#include "pipelines/universal/universal_lit_lighting.h"
 #include "pipelines/universal/universal_lights.h"
 #include "raster/shader_interface.h"
 #include "shaders_cpp/batch_helpers.h"
@@ -98,6 +100,7 @@ class UniversalLitShader final : public UniversalLitFragment {
     [[maybe_unused]] bool batched_shadows = false;
     if constexpr (kShadows) {
       batched_shadows = shadow_batch_supported(p_.shadow);
+      if (!batched_shadows) std::fill(visibility, visibility + n, 1.0f);  // read only where lit
       if (batched_shadows) {
         main_light_visibility_batch(p_.shadow, batch.varyings[MeshVertexShader::kWorldPos],
                                     batch.varyings[MeshVertexShader::kWorldPos + 1],
@@ -143,38 +146,15 @@ class UniversalLitShader final : public UniversalLitFragment {
         }
       }
     }
-    const float shininess = std::exp2(10.0f * p_.smoothness + 1.0f);
+    alignas(64) BatchVec3 rgb;
+    const float* main_visibility = nullptr;
+    if constexpr (kShadows) main_visibility = batched_shadows ? shadow_batch.visibility : visibility;
+    universal_lit_lighting(p_, batch, normal, albedo, main_visibility, lit, count, rgb);
     for (int f = 0; f < count; ++f) {
       if (!((lit >> f) & 1u)) continue;
-      const glm::vec3 n_f = batch_get3(normal, f);
-      const glm::vec3 position = batch_var3(batch, MeshVertexShader::kWorldPos, f);
-      const glm::vec3 to_camera = p_.camera_position - position;
-      const float camera_distance = glm::length(to_camera);
-      const glm::vec3 to_view = camera_distance > 0.0f ? to_camera / camera_distance : n_f;
-      const glm::vec3 base(albedo[0][f], albedo[1][f], albedo[2][f]);
-      const glm::vec3 diffuse_color = base * (1.0f - p_.metallic);
-      const glm::vec3 specular_color = glm::mix(glm::vec3(0.04f), base, p_.metallic);
-      // Ambient stands in for both indirect diffuse and the environment reflection URP would
-      // take from a reflection probe, so metals are not black outside their highlights.
-      glm::vec3 rgb = p_.ambient * (diffuse_color + specular_color);
-      glm::vec3 main_radiance = p_.main_light.radiance;
-      if constexpr (kShadows) main_radiance *= batched_shadows ? shadow_batch.visibility[f] : visibility[f];
-      rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, p_.main_light.to_light,
-                         main_radiance);
-      for (int i = 0; i < p_.additional_light_count; ++i) {
-        const AdditionalLight& light = p_.additional_lights[i];
-        glm::vec3 to_light = -light.direction;
-        glm::vec3 radiance = light.intensity;
-        if (light.type != AdditionalLight::Type::Directional) {
-          const glm::vec3 offset = light.position - position;
-          const float distance_squared = glm::dot(offset, offset);
-          to_light = distance_squared > 0.0f ? offset / std::sqrt(distance_squared) : n_f;
-          radiance *= range_attenuation(distance_squared, light.range) * spot_attenuation(light, -to_light);
-        }
-        rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, to_light, radiance);
-      }
-      if constexpr (kEmission) rgb += batch_get3(emissive, f);
-      out.set(0, f, glm::vec4(rgb, albedo[3][f]));
+      glm::vec3 c = batch_get3(rgb, f);
+      if constexpr (kEmission) c += batch_get3(emissive, f);
+      out.set(0, f, glm::vec4(c, albedo[3][f]));
     }
   }
 };
