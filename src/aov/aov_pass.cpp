@@ -51,9 +51,14 @@ class AovShader final : public FragmentShader {
           for (int f = 0; f < count; ++f) out.set(target, f, glm::vec4(batch.depth[f], 0.0f, 0.0f, 1.0f));
           break;
         case AovKind::PrimitiveId:
-          for (int f = 0; f < count; ++f) {
-            const float id = static_cast<float>(batch.quad_primitive_id[f / kQuadLanes]);
-            out.set(target, f, glm::vec4(id, 0.0f, 0.0f, 1.0f));
+          // Channel by channel, so the loops stay simple stores (the id is per quad).
+          for (int q = 0; q < batch.quad_count; ++q) {
+            const float id = static_cast<float>(batch.quad_primitive_id[q]);
+            for (int lane = 0; lane < kQuadLanes; ++lane) out.color[target][0][q * kQuadLanes + lane] = id;
+          }
+          for (int c = 1; c < 4; ++c) {
+            const float value = c == 3 ? 1.0f : 0.0f;
+            for (int f = 0; f < count; ++f) out.color[target][c][f] = value;
           }
           break;
         case AovKind::Normal: {
