@@ -29,6 +29,11 @@ class AovShader final : public FragmentShader {
   AovShader(std::unique_ptr<FragmentShader> material_shader, std::vector<AovKind> kinds)
       : material_(std::move(material_shader)), kinds_(std::move(kinds)) {}
   bool may_discard() const override { return material_ && material_->may_discard(); }
+  // Outputs per quad (primitive ids per quad); the material's functor, which reads texels,
+  // runs only when it may discard, so then it must allow batches across triangles too.
+  bool batches_across_triangles() const override {
+    return !may_discard() || material_->batches_across_triangles();
+  }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     if (may_discard()) {
@@ -46,8 +51,14 @@ class AovShader final : public FragmentShader {
           for (int f = 0; f < count; ++f) out.set(target, f, glm::vec4(batch.depth[f], 0.0f, 0.0f, 1.0f));
           break;
         case AovKind::PrimitiveId:
-          for (int f = 0; f < count; ++f) {
-            out.set(target, f, glm::vec4(static_cast<float>(batch.primitive_id), 0.0f, 0.0f, 1.0f));
+          // Channel by channel, so the loops stay simple stores (the id is per quad).
+          for (int q = 0; q < batch.quad_count; ++q) {
+            const float id = static_cast<float>(batch.quad_primitive_id[q]);
+            for (int lane = 0; lane < kQuadLanes; ++lane) out.color[target][0][q * kQuadLanes + lane] = id;
+          }
+          for (int c = 1; c < 4; ++c) {
+            const float value = c == 3 ? 1.0f : 0.0f;
+            for (int f = 0; f < count; ++f) out.color[target][c][f] = value;
           }
           break;
         case AovKind::Normal: {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <vector>
 
 namespace ontile {
 namespace {
@@ -209,6 +210,14 @@ uint16_t float_to_half_bits(float value) {
   return static_cast<uint16_t>(encode_small_float<10, true>(value));
 }
 float half_bits_to_float(uint16_t bits) { return decode_small_float<10, true>(bits); }
+const float* half_decode_table() {
+  static const std::vector<float> table = [] {
+    std::vector<float> t(65536);
+    for (uint32_t code = 0; code < t.size(); ++code) t[code] = half_bits_to_float(static_cast<uint16_t>(code));
+    return t;
+  }();
+  return table.data();
+}
 uint32_t float_to_uf11_bits(float value) { return encode_small_float<6, false>(value); }
 uint32_t float_to_uf10_bits(float value) { return encode_small_float<5, false>(value); }
 float uf11_bits_to_float(uint32_t bits) { return decode_small_float<6, false>(bits & 0x7FFu); }

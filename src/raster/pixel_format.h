@@ -72,6 +72,8 @@ uint8_t linear_to_srgb8(float linear);
 // payload bits kept (a payload that would vanish becomes the quiet bit).
 uint16_t float_to_half_bits(float value);
 float half_bits_to_float(uint16_t bits);
+// half_bits_to_float of every code (65536 floats), for samplers that decode by table lookup.
+const float* half_decode_table();
 // Vulkan "Unsigned 11-Bit / 10-Bit Floating-Point Numbers": 5-bit exponent (bias 15), 6 or 5
 // mantissa bits, no sign. Finite values round to the nearest representable finite value (ties
 // to even), so finite overflow gives the largest finite value (65024 / 64512); negative values

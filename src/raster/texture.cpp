@@ -479,7 +479,8 @@ glm::vec4 Texture2D::fetch(int level, int x, int y) const {
 
 bool Texture2D::samples_in_place(PixelFormat format) {
   return format == PixelFormat::RGBA8_UNORM || format == PixelFormat::RGBA8_SRGB ||
-         format == PixelFormat::D32_FLOAT || format == PixelFormat::R32_FLOAT;
+         format == PixelFormat::D32_FLOAT || format == PixelFormat::R32_FLOAT ||
+         format == PixelFormat::RGBA16_FLOAT;
 }
 
 glm::vec4 Texture2D::sample_lod(const SamplerDesc& sampler, glm::vec2 uv, float lod) const {

@@ -68,17 +68,24 @@ class Texture2D {
                                                           const uint8_t* bytes, std::string name);
 
   // Whether a render target of `format` can be sampled in place at about the cost of a texture
-  // (its stored texel is the value: RGBA8, sRGB8 and 32-bit float depth or red). Packed formats
-  // (RGB10A2, half floats, ...) decode per texel read, which bilinear footprints and PCF
-  // repeat up to 16 times per pixel, so the context samples a decoded copy of those instead.
+  // (its stored texel is the value: RGBA8, sRGB8 and 32-bit float depth or red; RGBA16F, whose
+  // channels decode by table lookup). Other packed formats (RGB10A2, ...) decode per texel
+  // read, which bilinear footprints and PCF repeat up to 16 times per pixel, so the context
+  // samples a decoded copy of those instead.
   static bool samples_in_place(PixelFormat format);
   // Texel `texel` (row-major index) of surface pixels in `format`: decode_pixel, with 32-bit
-  // float depth and red read inline.
+  // float depth and red read inline and RGBA16F through half_decode_table.
   static glm::vec4 load_surface_texel(PixelFormat format, const uint8_t* pixels, size_t texel) {
     if (format == PixelFormat::D32_FLOAT || format == PixelFormat::R32_FLOAT) {
       float value;
       std::memcpy(&value, pixels + texel * 4, sizeof value);
       return {value, 0.0f, 0.0f, 1.0f};
+    }
+    if (format == PixelFormat::RGBA16_FLOAT) {
+      uint16_t code[4];  // host order, as the format's rows store them (pixel_format.cpp)
+      std::memcpy(code, pixels + texel * 8, sizeof code);
+      const float* table = half_decode_table();
+      return {table[code[0]], table[code[1]], table[code[2]], table[code[3]]};
     }
     return decode_pixel(format, pixels + texel * bytes_per_pixel(format));
   }

@@ -90,6 +90,27 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
     }
     return;
   }
+  if (view.surface_bytes && view.surface_format == PixelFormat::RGBA16_FLOAT) {
+    // binary16 RGBA: two 32-bit words per texel (host order, R and B in the low halves), each
+    // code through half_decode_table, as load_surface_texel.
+    const float* table = half_decode_table();
+    const int32_t* words = reinterpret_cast<const int32_t*>(view.surface_bytes);
+    const VI low_half = hn::Set(di, 0xFFFF);
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const VI first = hn::ShiftLeft<1>(texel);
+      const VI rg = hn::GatherIndex(di, words, first);
+      const VI ba = hn::GatherIndex(di, words, hn::Add(first, hn::Set(di, 1)));
+      const VI codes[4] = {hn::And(rg, low_half), hn::And(hn::ShiftRight<16>(rg), low_half),
+                           hn::And(ba, low_half), hn::And(hn::ShiftRight<16>(ba), low_half)};
+      for (int c = 0; c < 4; ++c) {
+        const auto value = hn::GatherIndex(df, table, codes[c]);
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const glm::vec4 texel = view.load(x[f], y[f]);

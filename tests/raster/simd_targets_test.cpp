@@ -56,7 +56,8 @@ TEST(SimdTargets, EveryTargetRendersTheSameBits) {
                                    {"lambert", "msaa", "4"},
                                    {"cartoon", "", ""},
                                    {"deferred-subpass", "", ""},
-                                   {"forward", "msaa", "4"}};
+                                   {"forward", "msaa", "4"},
+                                   {"universal", "", ""}};
   for (const Case& c : cases) {
     force_simd_target(targets.front());
     const Frame reference = render(scene, c.pipeline, c.key, c.value);

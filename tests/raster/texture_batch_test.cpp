@@ -1,12 +1,13 @@
 // sample_batch_nearest (raster/texture_batch_simd.h) against Texture2D::sample_quad quad by quad:
 // the same values bit for bit and the same texel trace, for 8-bit, sRGB, float and surface-view
-// textures, uvs at centres, anywhere, on texel edges and non-finite, on every SIMD target.
+// (RGBA8, D32F, RGBA16F with every binary16 class) textures, uvs at centres, anywhere, on texel edges and non-finite, on every SIMD target.
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <random>
@@ -45,13 +46,18 @@ TEST(TextureBatch, NearestBatchesMatchSampleQuadBitsAndTrace) {
     const float d = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng);
     std::memcpy(&depth_bytes[i], &d, 4);
   }
+  // Random binary16 codes: zeros, subnormals, normals, infinities and NaNs of both signs.
+  std::vector<uint8_t> half_bytes(static_cast<size_t>(kW) * kH * 8);
+  for (auto& b : half_bytes) b = static_cast<uint8_t>(rng());
   const std::shared_ptr<const Texture2D> textures[] = {
       Texture2D::from_rgba8(kW, kH, bytes, false, "unorm8"),
       Texture2D::from_rgba8(kW, kH, bytes, true, "srgb8"),
       Texture2D::from_rgba32f(kW, kH, floats, "float"),
       Texture2D::view_of_surface(kW, kH, PixelFormat::RGBA8_UNORM, bytes.data(), "view8"),
       Texture2D::view_of_surface(kW, kH, PixelFormat::D32_FLOAT, depth_bytes.data(), "depth"),
+      Texture2D::view_of_surface(kW, kH, PixelFormat::RGBA16_FLOAT, half_bytes.data(), "half"),
   };
+  constexpr int kTextures = static_cast<int>(std::size(textures));
   const float inf = std::numeric_limits<float>::infinity();
   const float odd[] = {-0.3f, 1.7f, 0.0f, 1.0f, -0.0f, std::nanf(""), inf, -inf, 3e7f, -1e30f};
   const std::vector<std::string> targets = simd_targets();
@@ -61,7 +67,7 @@ TEST(TextureBatch, NearestBatchesMatchSampleQuadBitsAndTrace) {
   int checked = 0;
   for (int round = 0; round < 240; ++round) {
     force_simd_target(targets[round % targets.size()]);
-    const Texture2D& texture = *textures[round % 5];
+    const Texture2D& texture = *textures[round % kTextures];
     const int quads = 1 + static_cast<int>(rng() % kBatchQuads);
     const int kind = round % 4;  // centres, texel edges, anywhere, odd values
     for (int f = 0; f < kBatchFragments; ++f) {
@@ -106,6 +112,24 @@ TEST(TextureBatch, NearestBatchesMatchSampleQuadBitsAndTrace) {
     }
   }
   EXPECT_GT(checked, 240 * 8);
+}
+
+// RGBA16F surfaces are sampled in place through half_decode_table: every code must decode as
+// decode_pixel (the values the decoded copy held before) does, bit for bit.
+TEST(TextureBatch, HalfFloatSurfaceTexelsDecodeAsDecodePixel) {
+  std::vector<uint8_t> pixels(65536 / 4 * 8);
+  for (uint32_t code = 0; code < 65536; ++code) {
+    pixels[2 * code] = static_cast<uint8_t>(code);
+    pixels[2 * code + 1] = static_cast<uint8_t>(code >> 8);
+  }
+  for (size_t texel = 0; texel < 65536 / 4; ++texel) {
+    const glm::vec4 fast = Texture2D::load_surface_texel(PixelFormat::RGBA16_FLOAT, pixels.data(), texel);
+    const glm::vec4 reference = decode_pixel(PixelFormat::RGBA16_FLOAT, pixels.data() + texel * 8);
+    for (int c = 0; c < 4; ++c) {
+      ASSERT_EQ(std::bit_cast<uint32_t>(fast[c]), std::bit_cast<uint32_t>(reference[c])) << "texel " << texel;
+    }
+  }
+  EXPECT_TRUE(Texture2D::samples_in_place(PixelFormat::RGBA16_FLOAT));
 }
 
 TEST(TextureBatch, OtherSamplersAreLeftToSampleQuad) {

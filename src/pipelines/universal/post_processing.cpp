@@ -6,6 +6,7 @@
 #include "raster/texture_batch_simd.h"
 #include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/full_screen.h"
+#include "shaders_cpp/tone_curves_batch.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -23,6 +24,7 @@ class CopyShader final : public FragmentShader {
  public:
   CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
       : source_(std::move(source)), sampler_(sampler) {}
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
     if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
@@ -49,7 +51,20 @@ class TonemapShader final : public FragmentShader {
  public:
   TonemapShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler, float exposure)
       : source_(std::move(source)), sampler_(sampler), exposure_(exposure) {}
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
+    // Nearest 1:1 reads of the whole batch on SIMD lanes (the same texels and trace as
+    // sample_quad), then the tone curve on lanes with the scalar curve's operations.
+    if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
+                             batch.varyings[FullScreenVertexShader::kUv + 1],
+                             batch.fragment_count(), out.color[0])) {
+      if constexpr (kTonemapper == Tonemapper::AcesFitted) {
+        tonemap_aces_fitted_batch(out.color[0], exposure_, batch.padded_fragment_count());
+      } else {
+        tonemap_reinhard_batch(out.color[0], exposure_, batch.padded_fragment_count());
+      }
+      return;
+    }
     for (int q = 0; q < batch.quad_count; ++q) {
       glm::vec2 uv[kQuadLanes];
       batch_quad_uv(batch, FullScreenVertexShader::kUv, q, uv);

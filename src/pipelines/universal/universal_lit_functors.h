@@ -4,12 +4,15 @@
 // functor. Template flags are the keyword variants (_BASEMAP, _ALPHATEST_ON, _EMISSION) and
 // whether a main-light shadow map is bound (URP's _MAIN_LIGHT_SHADOWS).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include <glm/glm.hpp>
 
 #include "pipelines/universal/main_light_shadows.h"
+#include "pipelines/universal/main_light_shadows_batch.h"
+#include "pipelines/universal/universal_lit_lighting.h"
 #include "pipelines/universal/universal_lights.h"
 #include "raster/shader_interface.h"
 #include "shaders_cpp/batch_helpers.h"
@@ -71,9 +74,13 @@ class UniversalLitShader final : public UniversalLitFragment {
  public:
   using UniversalLitFragment::UniversalLitFragment;
   bool may_discard() const override { return kAlphaTest; }
+  // Outputs per quad; texels read quad by quad (base map, emission map, shadow taps).
+  bool batches_across_triangles() const override { return true; }
 
   // Texture reads per quad in the per-quad functor's order: base map, emission map, then the
-  // shadow-map lookups of the quad's kept fragments; then the lights fragment by fragment.
+  // shadow-map lookups of the quad's kept fragments; then the lights fragment by fragment. The
+  // shadow lookups of the whole batch run on SIMD lanes first when the map allows it (same
+  // visibility bits), their texel trace is still emitted quad by quad.
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int n = batch.padded_fragment_count();
     const int count = batch.fragment_count();
@@ -89,6 +96,18 @@ class UniversalLitShader final : public UniversalLitFragment {
       for (int f = 0; f < n; ++f) emissive[c][f] = value;
     }
     batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
+    [[maybe_unused]] ShadowBatch shadow_batch;
+    [[maybe_unused]] bool batched_shadows = false;
+    if constexpr (kShadows) {
+      batched_shadows = shadow_batch_supported(p_.shadow);
+      if (!batched_shadows) std::fill(visibility, visibility + n, 1.0f);  // read only where lit
+      if (batched_shadows) {
+        main_light_visibility_batch(p_.shadow, batch.varyings[MeshVertexShader::kWorldPos],
+                                    batch.varyings[MeshVertexShader::kWorldPos + 1],
+                                    batch.varyings[MeshVertexShader::kWorldPos + 2], normal,
+                                    p_.main_light.to_light, n, shadow_batch);
+      }
+    }
     uint64_t lit = 0;
     for (int q = 0; q < batch.quad_count; ++q) {
       glm::vec2 uv[kQuadLanes];
@@ -115,43 +134,27 @@ class UniversalLitShader final : public UniversalLitFragment {
         }
         lit |= uint64_t{1} << f;
         if constexpr (kShadows) {
-          visibility[f] = main_light_visibility(p_.shadow, batch_var3(batch, MeshVertexShader::kWorldPos, f),
-                                                batch_get3(normal, f), p_.main_light.to_light);
+          if (!batched_shadows) {
+            visibility[f] = main_light_visibility(p_.shadow, batch_var3(batch, MeshVertexShader::kWorldPos, f),
+                                                  batch_get3(normal, f), p_.main_light.to_light);
+          }
+        }
+      }
+      if constexpr (kShadows) {
+        if (batched_shadows) {
+          trace_shadow_quad(p_.shadow, shadow_batch, q, static_cast<unsigned>(lit >> (q * kQuadLanes)) & 0xFu);
         }
       }
     }
-    const float shininess = std::exp2(10.0f * p_.smoothness + 1.0f);
+    alignas(64) BatchVec3 rgb;
+    const float* main_visibility = nullptr;
+    if constexpr (kShadows) main_visibility = batched_shadows ? shadow_batch.visibility : visibility;
+    universal_lit_lighting(p_, batch, normal, albedo, main_visibility, lit, count, rgb);
     for (int f = 0; f < count; ++f) {
       if (!((lit >> f) & 1u)) continue;
-      const glm::vec3 n_f = batch_get3(normal, f);
-      const glm::vec3 position = batch_var3(batch, MeshVertexShader::kWorldPos, f);
-      const glm::vec3 to_camera = p_.camera_position - position;
-      const float camera_distance = glm::length(to_camera);
-      const glm::vec3 to_view = camera_distance > 0.0f ? to_camera / camera_distance : n_f;
-      const glm::vec3 base(albedo[0][f], albedo[1][f], albedo[2][f]);
-      const glm::vec3 diffuse_color = base * (1.0f - p_.metallic);
-      const glm::vec3 specular_color = glm::mix(glm::vec3(0.04f), base, p_.metallic);
-      // Ambient stands in for both indirect diffuse and the environment reflection URP would
-      // take from a reflection probe, so metals are not black outside their highlights.
-      glm::vec3 rgb = p_.ambient * (diffuse_color + specular_color);
-      glm::vec3 main_radiance = p_.main_light.radiance;
-      if constexpr (kShadows) main_radiance *= visibility[f];
-      rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, p_.main_light.to_light,
-                         main_radiance);
-      for (int i = 0; i < p_.additional_light_count; ++i) {
-        const AdditionalLight& light = p_.additional_lights[i];
-        glm::vec3 to_light = -light.direction;
-        glm::vec3 radiance = light.intensity;
-        if (light.type != AdditionalLight::Type::Directional) {
-          const glm::vec3 offset = light.position - position;
-          const float distance_squared = glm::dot(offset, offset);
-          to_light = distance_squared > 0.0f ? offset / std::sqrt(distance_squared) : n_f;
-          radiance *= range_attenuation(distance_squared, light.range) * spot_attenuation(light, -to_light);
-        }
-        rgb += blinn_phong(diffuse_color, specular_color, shininess, n_f, to_view, to_light, radiance);
-      }
-      if constexpr (kEmission) rgb += batch_get3(emissive, f);
-      out.set(0, f, glm::vec4(rgb, albedo[3][f]));
+      glm::vec3 c = batch_get3(rgb, f);
+      if constexpr (kEmission) c += batch_get3(emissive, f);
+      out.set(0, f, glm::vec4(c, albedo[3][f]));
     }
   }
 };
@@ -163,6 +166,7 @@ class UniversalAlphaClipShader final : public FragmentShader {
  public:
   explicit UniversalAlphaClipShader(const UniversalSurfaceParams& params) : p_(params) {}
   bool may_discard() const override { return true; }
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) float alpha[kBatchFragments];
     surface_alpha(p_, batch, alpha);
@@ -201,6 +205,7 @@ class UniversalDepthNormalsShader final : public FragmentShader {
   UniversalDepthNormalsShader(const UniversalSurfaceParams& params, const glm::mat3& world_to_view)
       : p_(params), world_to_view_(world_to_view) {}
   bool may_discard() const override { return kAlphaTest; }
+  bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     if constexpr (kAlphaTest) {
       alignas(64) float alpha[kBatchFragments];

@@ -1,6 +1,7 @@
 // Batched shading and the per-quad writes of a tile's triangles (see quad_batcher.h).
 #include "tiler/detail/quad_batcher.h"
 
+#include <atomic>
 #include <bit>
 #include <cstring>
 
@@ -10,6 +11,8 @@
 
 namespace ontile {
 namespace {
+
+std::atomic<bool> batches_across_triangles_enabled{true};
 
 // Coverage bits of sample 0 in every lane; shifted left by s for sample s.
 constexpr QuadCoverage kSampleBits = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
@@ -49,6 +52,8 @@ float TriangleContext::quantize_depth(double z) const {
   return f;
 }
 
+void set_batches_across_triangles(bool enabled) { batches_across_triangles_enabled.store(enabled); }
+
 QuadBatcher::QuadBatcher() : batch_(std::make_unique<FragmentBatch>()) {
   for (auto& out : outputs_) out = std::make_unique<BatchOutput>();
 }
@@ -63,7 +68,8 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
     cells_ = cells;
     cell_depth_ = cell_depth;
     opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
-    across_triangles_ = ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
+    across_triangles_ = batches_across_triangles_enabled.load(std::memory_order_relaxed) &&
+                        ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
                         !ctx.late_z && !ctx.per_sample && ctx.subpass.inputs.empty();
     triangle_count_ = 0;
   } else if (triangles_[triangle_count_ - 1].first_quad == queued_) {

@@ -98,6 +98,10 @@ struct BatchTriangle {
   int first_quad;  // queue position of its first quad (its quads run to the next triangle's)
 };
 
+// Batches across triangles are on by default; tests turn them off to compare frames with one
+// triangle per batch (same images and counters). Set between frames only.
+void set_batches_across_triangles(bool enabled);
+
 // Usage per triangle: if (!continues(ctx)) flush(); ... begin(); add() per quad; end_triangle().
 // A batch spans triangles only while nothing between them can observe the delayed shading:
 // one draw (functor, material, pass state), one facing, early depth (depth was tested and
