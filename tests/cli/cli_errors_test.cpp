@@ -143,7 +143,7 @@ TEST_F(CliErrors, ReferenceAndAccuracy) {
 TEST_F(CliErrors, StudyAndSweep) {
   const std::string study = "study deferred --scene " + kDemo + " --size 32x18";
   const std::string sweep = "sweep --scene " + kDemo + " --size 32x18 --frames 1 --spp 4";
-  const std::string outputs = " --csv " + out("s.csv") + " --plot " + out("s.png");
+  const std::string outputs = " --csv " + out("s.csv") + " --plot " + out("s.svg");
   expect_usage_errors(
       {
           {"study", "expected one of deferred"},
@@ -153,12 +153,12 @@ TEST_F(CliErrors, StudyAndSweep) {
           {study + " --markdown " + out("no/s.md"), "--markdown"},
           {"study deferred --scene " + kDemo + " --size 2x", "--size"},
           {sweep + " --spp 5" + outputs, "--spp"},
-          {sweep + " --csv " + out("s.txt") + " --plot " + out("s.png"), "--csv"},
-          {sweep + " --csv " + out("s.csv") + " --plot " + out("s.jpg"), "--plot"},
-          {sweep + " --csv " + out("s.csv") + " --plot " + out("no/s.png"), "--plot"},
+          {sweep + " --csv " + out("s.txt") + " --plot " + out("s.svg"), "--csv"},
+          {sweep + " --csv " + out("s.csv") + " --plot " + out("s.png"), "--plot"},
+          {sweep + " --csv " + out("s.csv") + " --plot " + out("no/s.svg"), "--plot"},
           {sweep + " --csv " + out("s.csv") + " --plot -", "--plot"},
           {"sweep --scene " + kDemo + " --size 99999999999x1" + outputs, "--size"},
-          {sweep + " --plot " + out("s.png"), "--csv"},
+          {sweep + " --plot " + out("s.svg"), "--csv"},
       },
       scratch_, out_);
 }
