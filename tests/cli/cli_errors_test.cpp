@@ -88,6 +88,14 @@ TEST_F(CliErrors, Render) {
           {"render --scene " + missing_scene + " --out " + out("x.png"), missing_scene},
           {"render --scene " + broken.string() + " --out " + out("x.png"), broken.string()},
           {"render --scene " + kDemo, "--out"},
+          {base + " --html " + out("no/r.html"), "--html"},
+          {base + " --html " + out("r.htm"), "--html"},
+          {base + " --html " + out("x.png"), "--html"},
+          {base + " --html -", "--html"},
+          {base + " --dump-attachments " + out("none"), "--dump-attachments"},
+          {base + " --tile-grid", "--tile-grid"},
+          {"render --scene " + kDemo + " --out " + out("x.exr") + " --aov depth --html " + out("r.html"), "--html"},
+          {"render --scene " + missing_scene + " --out " + out("x.png") + " --html " + out("r.html"), missing_scene},
       },
       scratch_, out_);
 }
