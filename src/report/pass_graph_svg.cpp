@@ -45,8 +45,12 @@ std::string written_graph_svg(const GraphReport& graph) {
       for (const std::string& r : *list) index_of(resources, r);
     }
   }
-  constexpr double kLeft = 210, kTop = 120, kRow = 26, kColumn = 28;
-  const double width = kLeft + kColumn * std::max<size_t>(resources.size(), 1) + 20;
+  constexpr double kLeft = 210, kRow = 26, kColumn = 28;
+  // Room above the rows for the resource names, which rise at 50 degrees (about 0.6 em a character).
+  size_t longest = 1;
+  for (const std::string& r : resources) longest = std::max(longest, std::min<size_t>(r.size(), 22));
+  const double kTop = 24 + 0.6 * 11 * longest * 0.77;
+  const double width = std::max(kLeft + kColumn * std::max<size_t>(resources.size(), 1) + 20, 480.0);
   const double height = kTop + kRow * graph.passes.size() + 40;
   SvgWriter svg(width, height, "pass-graph written");
   for (size_t r = 0; r < resources.size(); ++r) {
