@@ -24,7 +24,7 @@ namespace {
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
               render_graph = "off";
-  bool allow_outside_files = false, progress = false;
+  bool allow_outside_files = false, progress = false, tiles = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
@@ -83,7 +83,7 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
 }
 
 RenderRun run_of(const RenderOptions& o, const RenderSettings& settings) {
-  return {o.scene, settings, o.aov, o.frames};
+  return {o.scene, settings, o.aov, o.frames, o.tiles};
 }
 
 // --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
@@ -242,7 +242,11 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(32, 4096));
   cmd->add_option("--subpixel-bits", o->subpixel_bits, "Vertex snapping precision: 8 (D3D11, default) or 4 (Vulkan minimum)")
       ->check(CLI::IsMember({4, 8}));
-  cmd->add_option("--report", o->report, "Write the JSON traffic report here (- for standard output)");
+  CLI::Option* report = cmd->add_option("--report", o->report, "Write the JSON traffic report here (- for standard output)");
+  cmd->add_flag("--tiles", o->tiles,
+                "Add per-tile statistics of every pass to the report: triangles, fragments, depth-killed "
+                "fragments, cells, bytes per tile, and which thread ran each tile")
+      ->needs(report);
   cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr; "
                                    "with --set msaa=N, each pixel's sample 0)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));

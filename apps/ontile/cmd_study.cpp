@@ -13,7 +13,7 @@ namespace ontile::cli {
 namespace {
 
 struct StudyOptions {
-  std::string scene, size = "2220x1080", markdown;
+  std::string scene, size = "2220x1080", markdown, json;
   bool allow_outside_files = false, progress = false;
   StudySettings settings;
 };
@@ -22,17 +22,21 @@ void run_deferred_study(const StudyOptions& o) {
   StudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
   if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
+  if (!o.json.empty()) check_output_option("--json", o.json, true);
+  if (!o.markdown.empty() && !o.json.empty()) check_distinct_outputs({{"--markdown", o.markdown}, {"--json", o.json}});
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
   Progress progress("study", o.progress);
   s.progress = progress.callback();
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
-  const std::string md = deferred_study_markdown(rows, s, std::filesystem::path(o.scene).filename().string());
-  // The tables always go to standard output; --markdown - asks for nothing more.
+  const std::string scene_name = std::filesystem::path(o.scene).filename().string();
+  const std::string md = deferred_study_markdown(rows, s, scene_name);
+  // The tables go to standard output unless the JSON does; --markdown - asks for nothing more.
   RunOutputs outputs;
   if (!o.markdown.empty() && !is_stdout(o.markdown)) outputs.text(o.markdown, md);
+  if (!o.json.empty()) outputs.text(o.json, deferred_study_json(rows, s, scene_name).dump(2) + "\n");
   outputs.commit();
-  std::fputs(md.c_str(), stdout);
+  std::fputs(md.c_str(), is_stdout(o.json) ? stderr : stdout);
 }
 
 }  // namespace
@@ -56,6 +60,9 @@ void add_study_command(CLI::App& app) {
   cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   add_progress_flag(cmd, o->progress);
   cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
+  cmd->add_option("--json", o->json,
+                  "Also write the variants, their bytes and the two-passes-over-subpasses ratios as JSON "
+                  "(- for standard output; the tables then go to stderr)");
   cmd->callback([o] { run_deferred_study(*o); });
 }
 

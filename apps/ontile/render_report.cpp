@@ -8,7 +8,7 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
   const TilerConfig& tiler = s.context.tiler;
   nlohmann::json options = nlohmann::json::object();
   for (const auto& [key, value] : s.options.values()) options[key] = value;
-  nlohmann::json json = frame_report_json(report);
+  nlohmann::json json = frame_report_json(report, FrameReportOptions{.tiles = run.tiles});
   json["ontile_version"] = ONTILE_VERSION;
   json["run"] = {
       {"scene", run.scene},
@@ -27,7 +27,8 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
       {"parameter_cache_bytes", tiler.parameter_cache.size_bytes},
       {"render_target_cache_bytes", tiler.render_target_cache.size_bytes},
       {"aov", run.aov.empty() ? nlohmann::json() : nlohmann::json(run.aov)},
-      {"frames", run.frames ? nlohmann::json(*run.frames) : nlohmann::json()}};
+      {"frames", run.frames ? nlohmann::json(*run.frames) : nlohmann::json()},
+      {"tiles", run.tiles}};
   return json;
 }
 

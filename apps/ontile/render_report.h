@@ -17,6 +17,7 @@ struct RenderRun {
   RenderSettings settings;       // pipeline, options, size, camera, context configuration
   std::string aov;               // --aov, empty when the pipeline's image was rendered
   std::optional<int> frames;     // --frames
+  bool tiles = false;            // --tiles: per-tile statistics in the report
 };
 
 nlohmann::json render_report_json(const FrameReport& report, const RenderRun& run);

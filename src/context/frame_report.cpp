@@ -51,6 +51,39 @@ nlohmann::json geometry_json(const GeometryCounters& g) {
           {"tile_list_entries", g.tile_list_entries}};
 }
 
+nlohmann::json texture_sources_json(const PassReport& p) {
+  nlohmann::json sources = nlohmann::json::array();
+  for (const TextureSourceTraffic& t : p.texture_sources) {
+    sources.push_back({{"name", t.name},
+                       {"kind", t.render_target ? "render_target" : "texture"},
+                       {"misses", t.misses},
+                       {"bytes_read", t.bytes_read}});
+  }
+  return sources;
+}
+
+// One column of the pass's per-tile statistics, tile index order.
+template <typename Field>
+nlohmann::json tile_column(const PassReport& p, Field field) {
+  nlohmann::json column = nlohmann::json::array();
+  for (const TileStats& t : p.tile_stats) column.push_back(field(t));
+  return column;
+}
+
+nlohmann::json tile_stats_json(const PassReport& p) {
+  return {{"tiles_x", p.tiles_x()},
+          {"tiles_y", p.tiles_y()},
+          {"triangles", tile_column(p, [](const TileStats& t) { return t.triangles; })},
+          {"fragments_shaded", tile_column(p, [](const TileStats& t) { return t.fragments_shaded; })},
+          {"fragments_depth_rejected", tile_column(p, [](const TileStats& t) { return t.fragments_depth_rejected; })},
+          {"cells_rasterized", tile_column(p, [](const TileStats& t) { return t.cells_rasterized; })},
+          {"cells_hiz_rejected", tile_column(p, [](const TileStats& t) { return t.cells_hiz_rejected; })},
+          {"parameter_bytes_read", tile_column(p, [](const TileStats& t) { return t.parameter_bytes_read; })},
+          {"bytes_loaded", tile_column(p, [](const TileStats& t) { return t.bytes_loaded; })},
+          {"bytes_stored", tile_column(p, [](const TileStats& t) { return t.bytes_stored; })},
+          {"texture_bytes_read", tile_column(p, [](const TileStats& t) { return t.texture_bytes_read; })}};
+}
+
 nlohmann::json pass_json(const PassReport& p) {
   nlohmann::json attachments = nlohmann::json::array();
   for (const AttachmentTraffic& a : p.attachments) {
@@ -81,7 +114,8 @@ nlohmann::json pass_json(const PassReport& p) {
                                            {"misses", p.parameter_cache.misses}}}}},
           {"vertex_index_bytes_read", p.geometry.index_bytes_read + p.geometry.vertex_bytes_read},
           {"texture", {{"accesses", p.texture.accesses}, {"hits", p.texture.hits},
-                       {"misses", p.texture.misses}, {"bytes_read", p.texture.bytes_read}}},
+                       {"misses", p.texture.misses}, {"bytes_read", p.texture.bytes_read},
+                       {"sources", texture_sources_json(p)}}},
           {"render_target_cache", {{"hits", p.render_target_cache_hits},
                                    {"misses", p.render_target_cache_misses}}},
           {"fragments_shaded", p.tiles.fragments_shaded},
@@ -101,17 +135,23 @@ std::string mib(uint64_t bytes) {
 
 }  // namespace
 
-nlohmann::json frame_report_json(const FrameReport& frame) {
+nlohmann::json frame_report_json(const FrameReport& frame, const FrameReportOptions& options) {
   nlohmann::json passes = nlohmann::json::array();
   nlohmann::json timing_passes = nlohmann::json::array();
   for (const PassReport& p : frame.passes) {
     passes.push_back(pass_json(p));
-    timing_passes.push_back({{"name", p.name}, {"binning_ms", p.binning_ms}, {"tiles_ms", p.tiles_ms}});
+    nlohmann::json timing = {{"name", p.name}, {"binning_ms", p.binning_ms}, {"tiles_ms", p.tiles_ms}};
+    if (options.tiles) {
+      passes.back()["tile_stats"] = tile_stats_json(p);
+      timing["tile_thread"] = tile_column(p, [](const TileStats& t) { return t.thread; });
+      timing["tile_order"] = tile_column(p, [](const TileStats& t) { return t.order; });
+    }
+    timing_passes.push_back(std::move(timing));
   }
   nlohmann::json categories = nlohmann::json::object();
   for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
   nlohmann::json report = {{"format", "ontile-report"},
-                            {"schema_version", 2},  // docs/report.schema.json
+                            {"schema_version", 3},  // docs/report.schema.json
                             {"frame", {{"bytes_read", frame.bytes_read()},
                                        {"bytes_written", frame.bytes_written()},
                                        {"by_category", categories}}},
@@ -161,6 +201,25 @@ std::string frame_report_table(const FrameReport& frame) {
                   static_cast<unsigned long long>(p.texture.hits),
                   static_cast<unsigned long long>(p.texture.misses), mib(p.texture.bytes_read).c_str());
     out << line;
+    // Where the texture bytes came from, largest first; the rest summed on one line.
+    constexpr size_t kSourcesShown = 5;
+    uint64_t rest_bytes = 0;
+    for (size_t i = 0; i < p.texture_sources.size(); ++i) {
+      const TextureSourceTraffic& t = p.texture_sources[i];
+      if (i >= kSourcesShown) {
+        rest_bytes += t.bytes_read;
+        continue;
+      }
+      std::snprintf(line, sizeof line, "    from %-34s %-13s %12s\n", t.name.c_str(),
+                    t.render_target ? "render target" : "texture", mib(t.bytes_read).c_str());
+      out << line;
+    }
+    if (p.texture_sources.size() > kSourcesShown) {
+      std::snprintf(line, sizeof line, "    from %-34s %-13s %12s\n",
+                    ("(" + std::to_string(p.texture_sources.size() - kSourcesShown) + " more)").c_str(),
+                    "", mib(rest_bytes).c_str());
+      out << line;
+    }
     std::snprintf(line, sizeof line, "  %-20s %llu 8x8 cells rasterized, %llu skipped by hierarchical Z\n",
                   "raster", static_cast<unsigned long long>(p.tiles.cells_rasterized),
                   static_cast<unsigned long long>(p.tiles.cells_hiz_rejected));

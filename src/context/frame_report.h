@@ -27,9 +27,15 @@ struct FrameReport {
   std::map<std::string, uint64_t> bytes_by_category() const;
 };
 
+struct FrameReportOptions {
+  // Per-tile statistics of every pass ("tile_stats" in each pass, columns of tiles_x x tiles_y
+  // values; which thread ran each tile and when it started under "timing").
+  bool tiles = false;
+};
+
 // The JSON report (docs/memory-model.md documents every field). Timings are included under
 // "timing" and are the only part that differs between runs.
-nlohmann::json frame_report_json(const FrameReport& frame);
+nlohmann::json frame_report_json(const FrameReport& frame, const FrameReportOptions& options = {});
 // A readable table of the same numbers.
 std::string frame_report_table(const FrameReport& frame);
 

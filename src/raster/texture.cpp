@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <map>
 #include <mutex>
 #include <cmath>
 #include <cstddef>
@@ -32,6 +33,7 @@ constexpr uint64_t kTextureAlignmentBytes = 4096;
 std::atomic<uint64_t> next_texture_id{1};
 std::mutex reserved_bytes_mutex;
 std::vector<uint64_t> reserved_bytes_by_id{0};  // index = texture id
+std::map<uint64_t, Texture2D::Identity> identities_by_id;  // living textures only
 
 // Per-channel decode tables for 8-bit texels (unused for Float32), and whether a texel trace
 // is active on this thread: looked up once per sampling call, since a thread_local read on
@@ -372,6 +374,7 @@ std::shared_ptr<const Texture2D> Texture2D::from_surface_texels(int width, int h
   texture->encoding_ = TexelEncoding::Float32;
   texture->name_ = std::move(name);
   texture->levels_.push_back(Level{width, height, {}, std::move(rgba)});
+  texture->render_target_ = true;
   texture->assign_addresses(memory_bytes_per_texel);
   return texture;
 }
@@ -397,6 +400,7 @@ std::shared_ptr<const Texture2D> Texture2D::view_of_surface(int width, int heigh
   level.surface_bytes = bytes;
   level.surface_format = format;
   texture->levels_.push_back(std::move(level));
+  texture->render_target_ = true;
   texture->assign_addresses(bytes_per_pixel(format));
   return texture;
 }
@@ -415,9 +419,22 @@ void Texture2D::assign_addresses(int memory_bytes_per_texel) {
     const std::lock_guard<std::mutex> lock(reserved_bytes_mutex);
     if (reserved_bytes_by_id.size() <= id) reserved_bytes_by_id.resize(id + 1, 0);
     reserved_bytes_by_id[id] = reserved_bytes;
+    identities_by_id[id] = Identity{name_, render_target_};
   }
   base_address_ = id << kTextureIdShift;
   for (Level& level : levels_) level.address += base_address_;
+}
+
+Texture2D::~Texture2D() {
+  if (base_address_ == 0) return;  // construction failed before an id was reserved
+  const std::lock_guard<std::mutex> lock(reserved_bytes_mutex);
+  identities_by_id.erase(base_address_ >> kTextureIdShift);
+}
+
+Texture2D::Identity Texture2D::identity_of(uint64_t texture_id) {
+  const std::lock_guard<std::mutex> lock(reserved_bytes_mutex);
+  const auto found = identities_by_id.find(texture_id);
+  return found == identities_by_id.end() ? Identity{} : found->second;
 }
 
 uint64_t Texture2D::reserved_bytes_of(uint64_t texture_id) {

@@ -35,6 +35,9 @@ enum class TexelEncoding { Unorm8, Srgb8, Float32, SurfaceFormat };
 
 class Texture2D {
  public:
+  ~Texture2D();
+  Texture2D(const Texture2D&) = delete;
+  Texture2D& operator=(const Texture2D&) = delete;
   // Builds the mip chain down to 1x1 (2x2 box filter in linear space; odd sizes floor, the
   // last row/column folded in: the last texel along an odd axis averages 3 texels, 1/3 each)
   // from base-level RGBA8 texels, row-major, top row first. Levels are re-encoded to 8 bits
@@ -96,6 +99,14 @@ class Texture2D {
   // at frame-local addresses in first-use order.
   static constexpr int kTextureIdShift = 40;
   static uint64_t reserved_bytes_of(uint64_t texture_id);
+  // What a texture id names while the texture lives, so reports can attribute texture traffic
+  // to its source: the texture's name, and whether it is a render target (a surface view or a
+  // decoded render target) rather than a scene texture. Unknown ids give {"", false}.
+  struct Identity {
+    std::string name;
+    bool render_target = false;
+  };
+  static Identity identity_of(uint64_t texture_id);
   uint64_t base_address() const;
   uint64_t level_offset_bytes(int level) const;  // prefix sum of the sizes of levels < level
   int memory_bytes_per_texel() const;            // the stored size: a surface's for snapshots
@@ -163,6 +174,7 @@ class Texture2D {
  private:
   Texture2D() = default;
   std::vector<Level> levels_;
+  bool render_target_ = false;
   TexelEncoding encoding_ = TexelEncoding::Unorm8;
   std::string name_;
   uint64_t base_address_ = 0;

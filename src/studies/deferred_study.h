@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.h"
 
 namespace ontile {
@@ -50,6 +52,12 @@ std::vector<StudyVariant> deferred_study_variants(int lights);
 // Renders every variant (traffic is deterministic; time is the median over settings.frames).
 std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& settings,
                                 const std::vector<StudyVariant>& variants);
+
+// The study as JSON for scripts (docs/deferred.md): the settings, every variant with its bytes by
+// category, and `ratios` {read, write, total} of "two render passes" over "subpasses,
+// transient" beside the published Mali-G76 per-frame ratios (absent when either row is).
+nlohmann::json deferred_study_json(const std::vector<StudyRow>& rows, const StudySettings& settings,
+                                   const std::string& scene_name);
 
 // Markdown: the bytes table, then ours against the published Mali-G76 figures as ratios.
 std::string deferred_study_markdown(const std::vector<StudyRow>& rows, const StudySettings& settings,

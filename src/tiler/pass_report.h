@@ -53,6 +53,35 @@ struct AttachmentTraffic {
   uint64_t bytes_resolved = 0;  // Resolve writes of the averaged pixel
 };
 
+// One tile's share of a pass: its primitive list, fragment work and the external bytes charged
+// to it. Every count but `thread` and `order` is deterministic, and each sums over the tiles to
+// the pass's own figure (attachment bytes are the tile's area times the format, so on the IMR
+// model, which has no tile memory, they are 0 and only the pass totals count).
+struct TileStats {
+  uint32_t triangles = 0;               // entries in the tile's primitive list
+  uint64_t fragments_shaded = 0;
+  uint64_t fragments_depth_rejected = 0;
+  uint64_t cells_rasterized = 0;
+  uint64_t cells_hiz_rejected = 0;      // 8x8 cells skipped whole by hierarchical Z
+  uint64_t parameter_bytes_read = 0;    // as the tile read its list (before any parameter cache)
+  uint64_t bytes_loaded = 0;            // attachment loads into this tile's memory
+  uint64_t bytes_stored = 0;            // attachment stores and resolves from it
+  uint64_t texture_bytes_read = 0;      // texture-cache misses of the tile's fetches x line size
+  // Scheduling, which differs from run to run: the worker thread that ran the tile (oneTBB's
+  // arena slot) and the position at which it started among the pass's tiles.
+  int thread = -1;
+  uint32_t order = 0;
+};
+
+// Texture-cache misses of one texture the pass sampled: a render target written by an earlier
+// pass (sampled in place or decoded once) or a scene texture.
+struct TextureSourceTraffic {
+  std::string name;
+  bool render_target = false;
+  uint64_t misses = 0;
+  uint64_t bytes_read = 0;  // misses x line size
+};
+
 struct PassReport {
   std::string name;
   std::string architecture = "tbdr";  // "tbdr" or "imr"
@@ -67,10 +96,15 @@ struct PassReport {
   TextureTraffic texture;
   TextureTraffic parameter_cache;  // lookups when the parameter cache is modelled (else zero)
   uint64_t render_target_cache_hits = 0, render_target_cache_misses = 0;  // IMR only
+  // Texture bytes by the texture they were read from, largest first (ties by name).
+  std::vector<TextureSourceTraffic> texture_sources;
+  std::vector<TileStats> tile_stats;  // tiles_total entries, row-major (tiles_x() per row)
   // Wall-clock times (not deterministic; never part of comparisons).
   double binning_ms = 0.0;
   double tiles_ms = 0.0;
 
+  int tiles_x() const { return tile_width_px ? (width_px + tile_width_px - 1) / tile_width_px : 0; }
+  int tiles_y() const { return tile_height_px ? (height_px + tile_height_px - 1) / tile_height_px : 0; }
   uint64_t attachment_bytes_loaded() const;
   uint64_t attachment_bytes_stored() const;  // Store + Resolve
   uint64_t bytes_read() const;

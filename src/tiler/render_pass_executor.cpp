@@ -2,12 +2,15 @@
 #include "tiler/render_pass_executor.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
+#include <tbb/task_arena.h>
 
 #include "raster/sample_pattern.h"
+#include "raster/texture.h"
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/detail/tile_executor.h"
 #include "tiler/detail/trace_buffers.h"
@@ -151,6 +154,66 @@ void apply_imr_model(const RenderPassDesc& pass, const TilerConfig& config,
   }
 }
 
+// The tile's own counters, and its primitive list, into its statistics.
+void record_tile_counters(const TileCounters& c, const ParameterBuffer& params, int tile,
+                          TileStats& stats) {
+  stats.triangles = params.tile_offsets[tile + 1] - params.tile_offsets[tile];
+  stats.fragments_shaded = c.fragments_shaded;
+  stats.fragments_depth_rejected = c.fragments_depth_rejected;
+  stats.cells_rasterized = c.cells_rasterized;
+  stats.cells_hiz_rejected = c.cells_hiz_rejected;
+  stats.parameter_bytes_read = c.parameter_bytes_read;
+}
+
+// Texture misses per tile into the tile statistics, and per texture into texture_sources,
+// named by the textures (alive for the pass) that own the regions.
+void attribute_texture_misses(const TextureReplayDetail& detail, uint64_t line_bytes,
+                              PassReport& report) {
+  for (size_t t = 0; t < report.tile_stats.size(); ++t) {
+    report.tile_stats[t].texture_bytes_read = detail.misses_per_tile[t] * line_bytes;
+  }
+  for (const auto& [id, misses] : detail.misses_per_region) {
+    TextureSourceTraffic source;
+    if (id == 0) {
+      source.name = "(outside any texture)";
+    } else {
+      const Texture2D::Identity identity = Texture2D::identity_of(id);
+      source.name = identity.name.empty() ? "(unnamed texture)" : identity.name;
+      source.render_target = identity.render_target;
+    }
+    source.misses = misses;
+    source.bytes_read = misses * line_bytes;
+    report.texture_sources.push_back(std::move(source));
+  }
+  std::sort(report.texture_sources.begin(), report.texture_sources.end(),
+            [](const TextureSourceTraffic& a, const TextureSourceTraffic& b) {
+              if (a.bytes_read != b.bytes_read) return a.bytes_read > b.bytes_read;
+              if (a.name != b.name) return a.name < b.name;
+              return a.render_target < b.render_target;
+            });
+}
+
+// A tile loads and stores its own area of every attachment (TBDR): its share of the pass's
+// attachment bytes, so the tiles' shares sum to the pass's.
+void charge_attachment_bytes_per_tile(const RenderPassDesc& pass, const TileGrid& grid,
+                                      PassReport& report) {
+  for (int tile = 0; tile < grid.tile_count(); ++tile) {
+    const int x0 = (tile % grid.tiles_x()) * grid.tile_width_px;
+    const int y0 = (tile / grid.tiles_x()) * grid.tile_height_px;
+    const uint64_t pixels = static_cast<uint64_t>(std::min(grid.tile_width_px, grid.width_px - x0)) *
+                            static_cast<uint64_t>(std::min(grid.tile_height_px, grid.height_px - y0));
+    TileStats& stats = report.tile_stats[tile];
+    for (size_t a = 0; a < pass.attachments.size(); ++a) {
+      const AttachmentTraffic& t = report.attachments[a];
+      const uint64_t sample_bytes = pixels * pass.samples * bytes_per_pixel(t.format);
+      const uint64_t pixel_bytes = pixels * bytes_per_pixel(t.format);
+      if (t.bytes_loaded) stats.bytes_loaded += sample_bytes;
+      if (t.bytes_stored) stats.bytes_stored += sample_bytes;
+      if (t.bytes_resolved) stats.bytes_stored += pixel_bytes;
+    }
+  }
+}
+
 }  // namespace
 
 void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
@@ -207,15 +270,25 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   const bool imr = config.architecture == Architecture::Imr;
   const TraceBuffersLease texel_buffers;
   std::vector<TileTrace> traces(grid.tile_count());
+  report.tile_stats.resize(grid.tile_count());
+  std::atomic<uint32_t> tiles_started{0};
   ontile::parallel_for(0, grid.tile_count(), [&](int tile) {
+    TileStats& stats = report.tile_stats[tile];
+    stats.order = tiles_started.fetch_add(1, std::memory_order_relaxed);
+    stats.thread = tbb::this_task_arena::current_thread_index();
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
-    execute_tile(pass, params, tile, memory, counters.local(), traces[tile],
+    TileCounters tile_counters;
+    execute_tile(pass, params, tile, memory, tile_counters, traces[tile],
                  texel_buffers.local(), imr, config.hierarchical_z);
+    counters.local().add(tile_counters);
+    record_tile_counters(tile_counters, params, tile, stats);
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
-  report.texture = replay_texture_traces(texture_cache, traces);
+  TextureReplayDetail texture_detail;
+  report.texture = replay_texture_traces(texture_cache, traces, &texture_detail);
+  attribute_texture_misses(texture_detail, texture_cache.config().line_bytes, report);
   if (config.parameter_cache.size_bytes > 0 && config.architecture == Architecture::Tbdr) {
     report.parameter_cache = replay_parameter_reads(params, pass, config.parameter_cache);
     report.tiles.parameter_bytes_read = report.parameter_cache.bytes_read;
@@ -239,7 +312,11 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     }
     report.attachments.push_back(t);
   }
-  if (imr) apply_imr_model(pass, config, traces, report);
+  if (imr) {
+    apply_imr_model(pass, config, traces, report);
+  } else {
+    charge_attachment_bytes_per_tile(pass, grid, report);
+  }
   return report;
 }
 

@@ -159,6 +159,8 @@ TEST_F(CliErrors, StudyAndSweep) {
           {study + " --tile 12", "--tile"},
           {study + " --frames 0", "--frames"},
           {study + " --markdown " + out("no/s.md"), "--markdown"},
+          {study + " --json " + out("no/s.json"), "--json"},
+          {study + " --json " + out("s.md") + " --markdown " + out("s.md"), "--json"},
           {"study deferred --scene " + kDemo + " --size 2x", "--size"},
           {sweep + " --spp 5" + outputs, "--spp"},
           {sweep + " --csv " + out("s.txt") + " --plot " + out("s.svg"), "--csv"},

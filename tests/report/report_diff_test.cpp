@@ -20,7 +20,7 @@ Json attachment(const std::string& name, uint64_t loaded, uint64_t stored) {
 }
 
 Json report(Json passes, uint64_t read, uint64_t written, Json categories, Json run = Json::object()) {
-  Json r = {{"format", "ontile-report"}, {"schema_version", 2},
+  Json r = {{"format", "ontile-report"}, {"schema_version", 3},
             {"frame", {{"bytes_read", read}, {"bytes_written", written}, {"by_category", categories}}},
             {"passes", passes}};
   if (!run.empty()) r["run"] = run;

@@ -54,6 +54,19 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
   EXPECT_EQ(with_cache[0].bytes_read - with_cache[0].bytes_by_category.at("parameter_buffer_read"),
             rows[1].bytes_read - rows[1].bytes_by_category.at("parameter_buffer_read"));
 
+  // The JSON carries every variant and the two-passes-over-subpasses ratios of their bytes.
+  const nlohmann::json json = deferred_study_json(rows, s, "demo.glb");
+  ASSERT_EQ(json["variants"].size(), rows.size());
+  EXPECT_EQ(json["variants"][0]["bytes_written"].get<uint64_t>(), rows[0].bytes_written);
+  EXPECT_EQ(json["variants"][7]["by_category"]["attachment_load"].get<uint64_t>(), 16 * px);
+  EXPECT_DOUBLE_EQ(json["ratios"]["read"].get<double>(), double(rows[0].bytes_read) / double(rows[1].bytes_read));
+  EXPECT_DOUBLE_EQ(json["ratios"]["write"].get<double>(), double(rows[0].bytes_written) / double(rows[1].bytes_written));
+  EXPECT_DOUBLE_EQ(json["ratios"]["total"].get<double>(),
+                   double(rows[0].bytes_read + rows[0].bytes_written) / double(rows[1].bytes_read + rows[1].bytes_written));
+  EXPECT_GT(json["ratios"]["write"].get<double>(), 1.0);  // the G-buffer round trip
+  EXPECT_DOUBLE_EQ(json["ratios"]["published_mali_g76"]["write"].get<double>(), 3.93);
+  EXPECT_FALSE(deferred_study_json({rows[0]}, s, "demo.glb").contains("ratios"));
+
   const std::string md = deferred_study_markdown(rows, s, "demo.glb");
   for (const char* expected : {"| two render passes | 2 |", "949.4", "389.0", "| on tile |", "| separate pass |"}) {
     EXPECT_NE(md.find(expected), std::string::npos) << expected;

@@ -65,6 +65,24 @@ LambertOptions parse_lambert_options(const PipelineOptions& options) {
     }
   }
   if (!filter_known) bad_value("filter", filter, "gltf, bilinear, trilinear");
+  const std::string color_load = options.take("color_load", "clear");
+  if (color_load == "clear") {
+    o.color_load = LoadAction::Clear;
+  } else if (color_load == "load") {
+    o.color_load = LoadAction::Load;
+  } else if (color_load == "dont_care") {
+    o.color_load = LoadAction::DontCare;
+  } else {
+    bad_value("color_load", color_load, "clear, load, dont_care");
+  }
+  const std::string depth_store = options.take("depth_store", "dont_care");
+  if (depth_store == "dont_care") {
+    o.depth_store = StoreAction::DontCare;
+  } else if (depth_store == "store") {
+    o.depth_store = StoreAction::Store;
+  } else {
+    bad_value("depth_store", depth_store, "dont_care, store");
+  }
   check_lambert_options(o);
   return o;
 }
@@ -81,6 +99,10 @@ void check_lambert_options(const LambertOptions& o) {
   if (o.msaa_samples > 1 && (o.normals || o.primitive_id_output)) {
     throw Error("lambert: msaa=" + std::to_string(o.msaa_samples) +
                 " with a normal or primitive-id buffer (they are single-sample; use msaa=1)");
+  }
+  if (o.msaa_samples > 1 && o.color_load == LoadAction::Load) {
+    throw Error("lambert: color_load=load with msaa=" + std::to_string(o.msaa_samples) +
+                " (multisampled colour lives only in tile memory; use msaa=1)");
   }
 }
 

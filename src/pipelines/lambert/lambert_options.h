@@ -1,6 +1,7 @@
 // The lambert pipeline's options (`ontile render --set KEY=VALUE`): MSAA, depth format,
-// reversed Z, an optional stored normal buffer and texture filtering. Defaults reproduce the
-// pipeline's original image bit for bit.
+// reversed Z, an optional stored normal buffer, texture filtering, and the colour load and depth
+// store actions (Vulkan-Samples render_passes). Defaults reproduce the pipeline's original image
+// and traffic bit for bit.
 #pragma once
 #include <optional>
 
@@ -15,6 +16,12 @@ struct LambertOptions {
   bool reversed_z = false;                             // reversed_z=on|off
   std::optional<NormalStorage> normals;                // normals=none|rgb10a2|rgba16f|oct-rg16
   TextureFiltering filtering = TextureFiltering::Gltf; // filter=gltf|bilinear|trilinear
+  // color_load=clear|load|dont_care: the colour target's load action. `load` reads the target's
+  // previous contents (a new target holds zeros); dont_care starts from undefined contents,
+  // which ontile defines as the clear value, so its image equals clear's. load needs msaa=1.
+  LoadAction color_load = LoadAction::Clear;
+  // depth_store=dont_care|store: whether depth is written back (it then has a surface).
+  StoreAction depth_store = StoreAction::DontCare;
   // Not a --set option: an extra stored R32F target of primitive ids (for the accuracy sweep).
   bool primitive_id_output = false;
 };
@@ -23,7 +30,8 @@ struct LambertOptions {
 // naming the key and the bad value, e.g. "lambert: msaa=3 (valid: 1, 2, 4, 8)".
 LambertOptions parse_lambert_options(const PipelineOptions& options);
 // Throws Error for combinations the pipeline cannot render: a normal buffer or primitive ids
-// with MSAA (they are single-sample targets), or a sample count other than 1, 2, 4, 8.
+// with MSAA (they are single-sample targets), a sample count other than 1, 2, 4, 8, or loading
+// a multisampled colour target (it lives only in tile memory).
 void check_lambert_options(const LambertOptions& options);
 
 // "d16", "d24", "d32f" for the three depth formats.

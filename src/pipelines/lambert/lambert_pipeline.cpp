@@ -25,12 +25,20 @@ LambertFrame render_lambert(RenderContext& context, const FrameInputs& in, const
   std::vector<AttachmentDesc> attachments;
   // Multisampled colour lives only in tile memory and is resolved on tile (Vulkan's
   // pResolveAttachments): only the single-sample image reaches external memory.
-  attachments.push_back(samples == 1 ? Attachment::stored("color", frame.color).clear(lit::kBackgroundColor)
-                                     : Attachment::transient("color", PixelFormat::RGBA8_SRGB)
-                                           .clear(lit::kBackgroundColor)
-                                           .resolve_into(frame.color));
-  // Reversed Z clears to the far value 0 (camera_matrices.h).
-  attachments.push_back(Attachment::transient("depth", options.depth_format).clear_depth(options.reversed_z ? 0.0f : 1.0f));
+  AttachmentDesc color = samples == 1 ? Attachment::stored("color", frame.color).clear(lit::kBackgroundColor)
+                                      : Attachment::transient("color", PixelFormat::RGBA8_SRGB)
+                                            .clear(lit::kBackgroundColor)
+                                            .resolve_into(frame.color);
+  // The load action under study (Vulkan-Samples render_passes): load reads the whole target,
+  // clear and dont_care read nothing.
+  color.load = options.color_load;
+  attachments.push_back(color);
+  // Reversed Z clears to the far value 0 (camera_matrices.h). Stored depth needs a surface.
+  const float far_depth = options.reversed_z ? 0.0f : 1.0f;
+  attachments.push_back(options.depth_store == StoreAction::Store
+                            ? Attachment::stored("depth", kit.create_target("depth", options.depth_format, samples))
+                                  .clear_depth(far_depth)
+                            : Attachment::transient("depth", options.depth_format).clear_depth(far_depth));
   std::vector<int> opaque_outputs = {0};
   if (options.normals) {
     frame.normals = kit.create_target("normals", normal_storage_format(*options.normals));

@@ -106,8 +106,17 @@ class TextureCache {
   uint64_t next_frame_granule_ = 0;
 };
 
+// Where a replay's misses came from: per tile (tile index order) and per texture region id
+// (Texture2D's id; 0 for granules outside any texture). Both sum to the replay's misses.
+struct TextureReplayDetail {
+  std::vector<uint64_t> misses_per_tile;
+  std::map<uint64_t, uint64_t> misses_per_region;
+};
+
 // Feeds every tile's texture granules through the cache, tiles in index order, with the counts
-// of a serial per-access replay at any thread count (texture_replay.cpp).
-TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces);
+// of a serial per-access replay at any thread count (texture_replay.cpp). Fills `detail` when
+// given.
+TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces,
+                                     TextureReplayDetail* detail = nullptr);
 
 }  // namespace ontile

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -51,14 +52,18 @@ TextureTraffic traffic_of(uint64_t accesses, uint64_t misses, const TextureCache
   return traffic;
 }
 
-TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces) {
+TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces,
+                             TextureReplayDetail& detail) {
   RegionTable regions(place_region, &cache);
   uint64_t accesses = 0, misses = 0;
-  for (const TileTrace& trace : traces) {
-    const std::span<const uint64_t> granules = trace.texture_granules.granules();
+  for (size_t t = 0; t < traces.size(); ++t) {
+    const std::span<const uint64_t> granules = traces[t].texture_granules.granules();
     accesses += granules.size();
-    misses += replay_granules(cache.sets(), regions, granules.data(), granules.size());
+    const uint64_t tile_misses = replay_granules(cache.sets(), regions, granules.data(), granules.size());
+    detail.misses_per_tile[t] = tile_misses;
+    misses += tile_misses;
   }
+  regions.add_misses_to(detail.misses_per_region);
   return traffic_of(accesses, misses, cache);
 }
 
@@ -142,7 +147,7 @@ void copy_group_ways(const SetArray& all, const SetArray& group, uint32_t k, int
 }
 
 TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>& traces,
-                               int threads, int group_bits) {
+                               int threads, int group_bits, TextureReplayDetail& detail) {
   const SetArray& sets = cache.sets();
   const size_t groups = size_t{1} << group_bits;
   const size_t tile_count = traces.size();
@@ -169,6 +174,8 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
   }
   // 3. Each group's accesses in tile order, on its own copy of its sets.
   std::vector<uint64_t> group_misses(groups, 0);
+  std::vector<std::vector<uint64_t>> group_tile_misses(groups, std::vector<uint64_t>(tile_count, 0));
+  std::vector<std::map<uint64_t, uint64_t>> group_region_misses(groups);
   ontile::parallel_for(size_t{0}, groups, [&](size_t k) {
     const SetArray group = group_sets(sets, group_bits, scratch->group_tags[k]);
     copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, true);
@@ -177,13 +184,20 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
     for (size_t t = 0; t < tile_count; ++t) {
       const size_t* range = &scratch->group_ranges[2 * (t * groups + k)];
       const uint64_t* granules = scratch->workers[scratch->tiles[t].worker].groups[k].data();
-      misses += replay_granules(group, regions, granules + range[0], range[1] - range[0]);
+      const uint64_t tile_misses = replay_granules(group, regions, granules + range[0], range[1] - range[0]);
+      group_tile_misses[k][t] = tile_misses;
+      misses += tile_misses;
     }
     copy_group_ways(sets, group, static_cast<uint32_t>(k), group_bits, false);
+    regions.add_misses_to(group_region_misses[k]);
     group_misses[k] = misses;
   });
   uint64_t misses = 0;
-  for (const uint64_t m : group_misses) misses += m;
+  for (size_t k = 0; k < groups; ++k) {
+    misses += group_misses[k];
+    for (size_t t = 0; t < tile_count; ++t) detail.misses_per_tile[t] += group_tile_misses[k][t];
+    for (const auto& [id, count] : group_region_misses[k]) detail.misses_per_region[id] += count;
+  }
   return traffic_of(accesses, misses, cache);
 }
 
@@ -193,14 +207,19 @@ void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
   observer.store(replay_observer);
 }
 
-TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces) {
+TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces,
+                                     TextureReplayDetail* detail) {
+  TextureReplayDetail local_detail;
+  TextureReplayDetail& out = detail ? *detail : local_detail;
+  out.misses_per_tile.assign(traces.size(), 0);
+  out.misses_per_region.clear();
   TextureReplayObserver* const watching = observer.load();
   if (watching != nullptr) watching->before_replay(cache, traces);
   const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
   const int group_bits = group_bits_for(cache.sets(), threads);
   const TextureTraffic traffic = group_bits == 0
-                                     ? replay_serial(cache, traces)
-                                     : replay_parallel(cache, traces, threads, group_bits);
+                                     ? replay_serial(cache, traces, out)
+                                     : replay_parallel(cache, traces, threads, group_bits, out);
   if (watching != nullptr) watching->after_replay(cache, traffic);
   return traffic;
 }

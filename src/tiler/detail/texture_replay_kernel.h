@@ -5,6 +5,9 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
 
 #include "tiler/detail/texture_cache.h"
 
@@ -18,6 +21,10 @@ struct RegionTable {
   static constexpr size_t kSlots = 64;
   alignas(64) uint64_t ids[kSlots];
   alignas(64) uint64_t offsets[kSlots];
+  // Misses of each slot's region since it entered the slot; a region leaving its slot adds
+  // them to `spilled_misses` (id, misses), so every miss is attributed to its texture.
+  uint64_t misses[kSlots];
+  std::vector<std::pair<uint64_t, uint64_t>> spilled_misses;
   uint64_t (*resolve)(void* context, uint64_t id) = nullptr;
   void* context = nullptr;
 
@@ -26,20 +33,33 @@ struct RegionTable {
     for (size_t slot = 0; slot < kSlots; ++slot) {
       ids[slot] = ~uint64_t{0};  // no region: ids are below 2^30
       offsets[slot] = 0;
+      misses[slot] = 0;
     }
   }
   uint64_t offset(uint64_t id) {
     const size_t slot = id & (kSlots - 1);
     if (ids[slot] != id) {
+      if (misses[slot] != 0) spilled_misses.emplace_back(ids[slot], misses[slot]);
+      misses[slot] = 0;
       offsets[slot] = resolve(context, id);
       ids[slot] = id;
     }
     return offsets[slot];
   }
+  // Called after offset(id): one more miss of region id.
+  void count_miss(uint64_t id) { ++misses[id & (kSlots - 1)]; }
+  // Adds every region's misses so far to `by_region` (id -> misses).
+  void add_misses_to(std::map<uint64_t, uint64_t>& by_region) const {
+    for (const auto& [id, count] : spilled_misses) by_region[id] += count;
+    for (size_t slot = 0; slot < kSlots; ++slot) {
+      if (misses[slot] != 0) by_region[ids[slot]] += misses[slot];
+    }
+  }
 };
 
 // Every granule of [granules, granules + count) in order: frame granule = granule + its region's
-// offset, then sets.access. Returns the number of misses.
+// offset, then sets.access. Returns the number of misses, which are also counted per region in
+// `regions`.
 uint64_t replay_granules(const SetArray& sets, RegionTable& regions, const uint64_t* granules,
                          size_t count);
 

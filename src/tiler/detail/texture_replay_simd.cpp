@@ -17,9 +17,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr int kRegionShift = TextureCache::kRegionShiftGranules;
 
-// One granule the long way: its region's offset (resolved if new), then the full LRU access.
+// One granule the long way: its region's offset (resolved if new), then the full LRU access; a
+// miss is counted against its region.
 HWY_INLINE bool access_one(const SetArray& sets, RegionTable& regions, uint64_t granule) {
-  return sets.access(granule + regions.offset(granule >> kRegionShift));
+  const uint64_t id = granule >> kRegionShift;
+  const bool hit = sets.access(granule + regions.offset(id));
+  if (!hit) regions.count_miss(id);
+  return hit;
 }
 
 // The number of leading granules of [granules, granules + count) that hit the most recent way
