@@ -124,7 +124,12 @@ std::string executed_graph_svg(const FrameReport& frame, const std::vector<Captu
       }
     }
   }
-  const size_t texture_lane = index_of(lanes, "textures (memory)");
+  for (const PassReport& p : frame.passes) {
+    for (const TextureSourceTraffic& t : p.texture_sources) {
+      if (t.render_target) index_of(lanes, t.name);
+    }
+  }
+  const size_t texture_lane = index_of(lanes, "scene textures");
   const size_t parameter_lane = index_of(lanes, "parameter buffer");
   constexpr double kLeft = 150, kColumn = 260, kBoxWidth = 236, kLine = 15, kLane = 34;
   double box_height = 0;
@@ -193,7 +198,15 @@ std::string executed_graph_svg(const FrameReport& frame, const std::vector<Captu
              t.bytes_resolved, "resolve");
       }
     }
-    edge(texture_lane, false, p.texture.bytes_read, "texture");
+    // Texture reads by source: a render target an earlier pass wrote reads back from its own
+    // lane (classic deferred's G-buffer read-back shows there); scene textures share one lane.
+    uint64_t scene_texture_bytes = p.texture.bytes_read;
+    for (const TextureSourceTraffic& t : p.texture_sources) {
+      if (!t.render_target) continue;
+      edge(index_of(lanes, t.name), false, t.bytes_read, "texture");
+      scene_texture_bytes -= std::min(scene_texture_bytes, t.bytes_read);
+    }
+    edge(texture_lane, false, scene_texture_bytes, "texture");
     edge(parameter_lane, true, p.geometry.parameter_bytes_written, "bin");
     edge(parameter_lane, false, p.tiles.parameter_bytes_read, "tile lists");
   }

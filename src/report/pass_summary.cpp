@@ -62,8 +62,13 @@ PassSummary summarize_pass(const PassReport& p, const CapturedPass* captured, co
     if (t.bytes_resolved) s.to_memory.push_back("resolved " + t.name + " " + bytes_text(t.bytes_resolved));
   }
   if (p.texture.bytes_read) {
+    std::vector<std::string> sources;
+    for (const TextureSourceTraffic& t : p.texture_sources) {
+      if (t.bytes_read) sources.push_back(t.name + (t.render_target ? " (render target) " : " ") + bytes_text(t.bytes_read));
+    }
     s.to_memory.push_back("texture reads " + bytes_text(p.texture.bytes_read) + " (" + std::to_string(p.texture.misses) +
-                          " cache misses of " + std::to_string(p.texture.accesses) + " lookups)");
+                          " cache misses of " + std::to_string(p.texture.accesses) + " lookups" +
+                          (sources.empty() ? std::string() : ": " + joined(sources, ", ")) + ")");
   }
   if (p.geometry.parameter_bytes_written || p.tiles.parameter_bytes_read) {
     s.to_memory.push_back("parameter buffer written " + bytes_text(p.geometry.parameter_bytes_written) + ", read " +
