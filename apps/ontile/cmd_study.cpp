@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "scene/gltf_loader.h"
+#include "studies/architecture_study.h"
 #include "studies/deferred_study.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
@@ -39,6 +40,51 @@ void run_deferred_study(const StudyOptions& o) {
   std::fputs(md.c_str(), is_stdout(o.json) ? stderr : stdout);
 }
 
+struct ArchitectureOptions {
+  std::string scene, size = "1920x1080", markdown, json;
+  bool allow_outside_files = false, progress = false;
+  ArchitectureStudySettings settings;
+};
+
+void run_architecture_study_command(const ArchitectureOptions& o) {
+  ArchitectureStudySettings s = o.settings;
+  parse_size(o.size, s.width_px, s.height_px);
+  if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
+  if (!o.json.empty()) check_output_option("--json", o.json, true);
+  check_distinct_outputs({{"--markdown", o.markdown}, {"--json", o.json}});
+  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  Progress progress("study", o.progress);
+  s.progress = progress.callback();
+  const std::vector<ArchitectureRow> rows = run_architecture_study(scene, s);
+  const std::string scene_name = std::filesystem::path(o.scene).filename().string();
+  const std::string md = architecture_study_markdown(rows, s, scene_name);
+  RunOutputs outputs;
+  if (!o.markdown.empty() && !is_stdout(o.markdown)) outputs.text(o.markdown, md);
+  if (!o.json.empty()) outputs.text(o.json, architecture_study_json(rows, s, scene_name).dump(2) + "\n");
+  outputs.commit();
+  std::fputs(md.c_str(), is_stdout(o.json) ? stderr : stdout);
+}
+
+void add_architecture_study(CLI::App* study) {
+  auto o = std::make_shared<ArchitectureOptions>();
+  CLI::App* cmd = study->add_subcommand(
+      "architecture", "Tile-based vs immediate mode and tile size, after Antochi et al. 2004 (docs/fidelity.md)");
+  add_scene_options(cmd, o->scene, o->allow_outside_files, "glTF scene");
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT, each side 1..16384 (default 1920x1080)");
+  cmd->add_option("--tiles", o->settings.tile_sizes_px, "TBDR tile sizes, comma-separated (default 8,16,32,64)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({4, 8, 16, 32, 64}));
+  cmd->add_option("--pipelines", o->settings.pipelines, "Pipelines, comma-separated (default lambert)")->delimiter(',');
+  cmd->add_option("--parameter-cache-kib", o->settings.parameter_cache_kib,
+                  "Model an L2 for parameter-buffer reads, in KiB (default 0: none)")
+      ->check(CLI::Range(0, 65536));
+  cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  add_progress_flag(cmd, o->progress);
+  cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
+  cmd->add_option("--json", o->json, "Also write the rows and ratios as JSON (- for standard output)");
+  cmd->callback([o] { run_architecture_study_command(*o); });
+}
+
 }  // namespace
 
 void add_study_command(CLI::App& app) {
@@ -64,6 +110,7 @@ void add_study_command(CLI::App& app) {
                   "Also write the variants, their bytes and the two-passes-over-subpasses ratios as JSON "
                   "(- for standard output; the tables then go to stderr)");
   cmd->callback([o] { run_deferred_study(*o); });
+  add_architecture_study(study);
 }
 
 }  // namespace ontile::cli

@@ -81,3 +81,13 @@ TEST(Cli, GenSceneReproducesTheBundledDemoByteForByte) {
 }
 
 }  // namespace
+
+// More threads than cores (determinism is tested at 7 and 16 threads on 2-core machines): the
+// render runs them without oneTBB's "number of workers is limited" warning on stderr.
+TEST(Cli, MoreThreadsThanCoresRunWithoutAWarning) {
+  const fs::path out = temp_folder() / "threads.png";
+  const CliRun r = run_cli("render --scene " + kDemo + " --size 128x72 --threads 17 --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("TBB Warning"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("on 17 threads"), std::string::npos) << r.output;
+}

@@ -9,6 +9,7 @@
 
 #include "shaders_cpp/full_screen.h"
 #include "util/error.h"
+#include "util/worker_threads.h"
 
 namespace ontile {
 namespace {
@@ -23,8 +24,10 @@ PropertyBlock blit_source_properties(const RenderTargetRef& source) {
 }
 
 int thread_count(const ContextConfig& config) {
-  return config.threads > 0 ? config.threads
-                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = config.threads > 0 ? config.threads
+                                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  allow_worker_threads(threads);  // 7 threads on 2 cores run 7 workers, without a TBB warning
+  return threads;
 }
 
 }  // namespace
