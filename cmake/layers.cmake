@@ -43,7 +43,7 @@ ontile_layer(context FOLDERS context PUBLIC_DEPS ontile_tiler ontile_scene PRIVA
 ontile_layer(pipelines FOLDERS pipelines PUBLIC_DEPS ontile_context ontile_shaders)
 # Pipelines register themselves from static objects (pipelines/kit/pipeline.h): every member of
 # the archive must be linked, even though nothing refers to it by name.
-ontile_layer(tools FOLDERS aov analysis golden reference report studies
+ontile_layer(tools FOLDERS aov analysis charts golden reference report studies
   PUBLIC_DEPS "$<LINK_LIBRARY:WHOLE_ARCHIVE,ontile_pipelines>" PRIVATE_DEPS embree)
 
 # Everything, for the CLI, the tests, the benchmarks and the fuzzers.

@@ -6,11 +6,12 @@ packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libt
           libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
           libstb-dev openimageio-tools libhwy-dev
           libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
-          python3 python3-jsonschema)
+          python3 python3-jsonschema chromium)
 # openimageio-tools: Debian's OpenImageIO CMake config references its command-line tools.
 # libegl-dev, libgles-dev, libegl-mesa0, libgl1-mesa-dri: EGL/GLES headers and Mesa's llvmpipe
 # for the peer benchmark (bench/llvmpipe/, scripts/peer_bench.sh).
 # python3-jsonschema: the tests check every render report against docs/report.schema.json.
+# chromium: the browser test opens `render --html` pages headless (HtmlBrowser.*; skipped without it).
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

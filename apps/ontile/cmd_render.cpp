@@ -1,6 +1,6 @@
 // `ontile render`: renders a scene with a pipeline, writes the image (and optionally the JSON
-// traffic report, "-" for standard output) together, and prints a summary with the traffic
-// table; --frames N times N frames.
+// traffic report, "-" for standard output; the HTML report and attachment dumps) together, and
+// prints a summary with the traffic table; --frames N times N frames.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +12,7 @@
 #include "context/frame_report.h"
 #include "io/image_io.h"
 #include "pipelines/kit/render_frame.h"
+#include "render_inspect.h"
 #include "render_report.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
@@ -28,6 +29,7 @@ struct RenderOptions {
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
   std::optional<int> frames;  // --frames: time this many frames after a warm-up
+  InspectOptions inspect;     // --html, --dump-attachments, --tile-grid
 };
 
 // Renders once (the warm-up when timing), then `frames` more times with each frame timed by the
@@ -180,7 +182,8 @@ RenderSettings checked_settings(const RenderOptions& o) {
   }
   check_output_option("--out", o.out, false);
   if (!o.report.empty()) check_output_option("--report", o.report, true);
-  check_distinct_outputs({{"--out", o.out}, {"--report", o.report}});
+  check_inspect_options(o.inspect, !o.aov.empty());
+  check_distinct_outputs({{"--out", o.out}, {"--report", o.report}, {"--html", o.inspect.html}});
   return settings;
 }
 
@@ -195,14 +198,31 @@ void run_render(const RenderOptions& o) {
   }
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   std::vector<double> ms;
-  const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_frame(scene, settings); });
+  // --html and --dump-attachments capture every pass of the first (warm-up) frame: frames are
+  // bit-identical, and the timed frames then pay nothing for the copies.
+  PassCapture capture;
+  bool first_frame = true;
+  const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, o.progress, [&] {
+    RenderSettings frame_settings = settings;
+    if (first_frame && o.inspect.wanted()) frame_settings.context.pass_observer = &capture;
+    first_frame = false;
+    return render_frame(scene, frame_settings);
+  });
   const FrameReport& report = frame.outputs.report;
   write_color(o.out, *frame.outputs.color, outputs.files());
-  if (!o.report.empty()) outputs.text(o.report, render_report_json(report, run_of(o, settings)).dump(2) + "\n");
+  const nlohmann::json json = render_report_json(report, run_of(o, settings));
+  if (!o.report.empty()) outputs.text(o.report, json.dump(2) + "\n");
+  const std::string title = o.scene + ": " + o.pipeline + ", " + std::to_string(settings.width_px) + "x" +
+                            std::to_string(settings.height_px);
+  const size_t dumped = o.inspect.wanted()
+                            ? stage_inspection(o.inspect, frame.outputs, capture, json["run"], title, outputs.files())
+                            : 0;
   outputs.commit();
   std::FILE* summary = summary_stream(is_stdout(o.report));
   print_summary(summary, o, settings, scene, report);
   std::fprintf(summary, "wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
+  if (!o.inspect.html.empty()) std::fprintf(summary, "wrote %s\n", o.inspect.html.c_str());
+  if (!o.inspect.dump_dir.empty()) std::fprintf(summary, "wrote %zu attachment files into %s\n", dumped, o.inspect.dump_dir.c_str());
   print_frame_times(summary, ms);
 }
 
@@ -237,6 +257,13 @@ void add_render_command(CLI::App& app) {
                   "Render N more frames after one warm-up and print their median and minimum time (ms); "
                   "the outputs are the last frame's");
   add_progress_flag(cmd, o->progress);
+  cmd->add_option("--html", o->inspect.html,
+                  "Write a self-contained HTML report: final image, pass graph, every attachment after every pass, "
+                  "per-tile heatmaps, traffic tables (docs/report.md)");
+  cmd->add_option("--dump-attachments", o->inspect.dump_dir,
+                  "Write every attachment after every pass into this existing folder: <pass index>-<pass>-<attachment>.png "
+                  "(8-bit formats) or .exr (float and depth formats)");
+  cmd->add_flag("--tile-grid", o->inspect.tile_grid, "Draw the tile grid over the --dump-attachments files");
   cmd->add_option("--set", o->pipeline_options, "Pipeline option KEY=VALUE (repeatable; see docs)");
   cmd->add_option("--arch", o->arch, "Memory model: tbdr (tile-based, default) or imr (immediate mode)")
       ->check(CLI::IsMember({"tbdr", "imr"}));

@@ -1,6 +1,6 @@
 // `ontile sweep`: time against error. Renders a 64-spp ray-traced reference once, then the
 // lambert pipeline at every sweep setting (MSAA, subpixel precision, depth format and reversed
-// Z, normal storage, texture filtering), and writes the measurements as CSV and a plot (PNG).
+// Z, normal storage, texture filtering), and writes the measurements as CSV and a plot (SVG).
 
 #include <cstdio>
 #include <filesystem>
@@ -8,7 +8,6 @@
 #include "analysis/sweep_csv.h"
 #include "analysis/sweep_plot.h"
 #include "commands.h"
-#include "io/image_io.h"
 #include "reference/reference_renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
@@ -57,7 +56,7 @@ void run_sweep_command(const SweepOptions& o) {
     throw UsageError(e.what());
   }
   if (!is_stdout(o.csv)) require_extension(o.csv, "--csv", ".csv");
-  require_extension(o.plot, "--plot", ".png");
+  require_extension(o.plot, "--plot", ".svg");
   check_output_option("--csv", o.csv, true);
   check_output_option("--plot", o.plot, false);
   check_distinct_outputs({{"--csv", o.csv}, {"--plot", o.plot}});
@@ -81,8 +80,7 @@ void run_sweep_command(const SweepOptions& o) {
 
   RunOutputs outputs;
   outputs.text(o.csv, sweep_csv(result));
-  const Canvas canvas = render_scatter_plot(sweep_plot_spec(result, std::filesystem::path(o.scene).filename().string()));
-  write_png_rgba8(o.plot, canvas.width(), canvas.height(), canvas.rgba(), &outputs.files());
+  outputs.text(o.plot, scatter_chart_svg(sweep_plot_spec(result, std::filesystem::path(o.scene).filename().string())));
   outputs.commit();
   std::fprintf(summary, "wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
 }
@@ -101,7 +99,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "Rasterizer worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
   cmd->add_option("--spp", o->spp, "Reference samples per pixel, a perfect square (default 64)");
   cmd->add_option("--csv", o->csv, "Write the measurements here (.csv, or - for standard output)")->required();
-  cmd->add_option("--plot", o->plot, "Write the error-vs-time plot here (.png)")->required();
+  cmd->add_option("--plot", o->plot, "Write the error-vs-time plot here (.svg)")->required();
   add_progress_flag(cmd, o->progress);
   cmd->callback([o] { run_sweep_command(*o); });
 }

@@ -8,9 +8,9 @@ namespace ontile {
 PlotSpec sweep_plot_spec(const SweepResult& result, const std::string& scene_name) {
   PlotSpec spec;
   spec.title = scene_name + " " + std::to_string(result.width_px) + "x" + std::to_string(result.height_px) +
-               " VS " + std::to_string(result.reference_spp) + "-SPP REFERENCE";
-  spec.x_title = "TIME PER FRAME (MS, MEDIAN)";
-  spec.y_title = "MEAN ABS ERROR (SRGB8 CODES)";
+               " vs " + std::to_string(result.reference_spp) + "-spp reference";
+  spec.x_title = "time per frame (ms, median)";
+  spec.y_title = "mean absolute error (sRGB8 codes)";
   spec.series_names = sweep_axes();
   for (const SweepRow& r : result.rows) {
     const auto it = std::find(spec.series_names.begin(), spec.series_names.end(), r.setting.axis);

@@ -3,8 +3,8 @@
 #pragma once
 #include <string>
 
-#include "analysis/scatter_plot.h"
 #include "analysis/sweep_run.h"
+#include "charts/scatter_chart.h"
 
 namespace ontile {
 

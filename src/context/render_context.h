@@ -10,6 +10,7 @@
 
 #include "context/command_buffer.h"
 #include "context/frame_report.h"
+#include "context/pass_observer.h"
 #include "context/render_graph_compiler.h"
 #include "tiler/render_pass_executor.h"
 
@@ -19,6 +20,9 @@ struct ContextConfig {
   int threads = 0;  // 0: all hardware threads
   TilerConfig tiler;
   RenderGraphMode render_graph = RenderGraphMode::Off;  // how RenderGraph::execute compiles
+  // Told about every render pass after it ran (not owned; it must outlive submit()). Null, the
+  // default, costs nothing: no surface is read or copied.
+  PassObserver* pass_observer = nullptr;
 };
 
 // Temporary render targets, pooled by descriptor across frames of one context.

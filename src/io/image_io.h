@@ -33,6 +33,10 @@ void write_image(const std::filesystem::path& path, const ImageRGBA32F& image,
 void write_png_rgba8(const std::filesystem::path& path, int width, int height,
                      const std::vector<uint8_t>& rgba, StagedOutputs* staged = nullptr);
 
+// The same 8-bit RGBA PNG as write_png_rgba8 would write, as a "data:image/png;base64,..." URI for
+// self-contained HTML pages (RFC 2397, RFC 4648 base64). Throws Error for a size mismatch.
+std::string png_data_uri(int width, int height, const std::vector<uint8_t>& rgba);
+
 // Writes a float32 OpenEXR with arbitrary channels (AOVs such as "Z" or "N.x", "N.y", "N.z"):
 // interleaved holds width * height * channel_names.size() values. The extension must be ".exr".
 void write_exr_channels(const std::filesystem::path& path, int width, int height,

@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "support/cli_runner.h"
 #include "analysis/sweep_csv.h"
-#include "io/image_io.h"
 
 namespace ontile {
 namespace {
@@ -38,9 +38,9 @@ const std::string kDemo = std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb";
 
 TEST(SweepCli, WritesTheCsvRowsAndThePlot) {
   const fs::path dir = temp_folder();
-  const fs::path csv = dir / "sweep.csv", png = dir / "sweep.png";
+  const fs::path csv = dir / "sweep.csv", svg = dir / "sweep.svg";
   const CliRun r = run_cli("sweep --scene " + kDemo + " --size 64x36 --frames 1 --spp 4 --threads 2 --csv " +
-                           csv.string() + " --plot " + png.string());
+                           csv.string() + " --plot " + svg.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
 
@@ -73,24 +73,30 @@ TEST(SweepCli, WritesTheCsvRowsAndThePlot) {
   EXPECT_EQ(split(lines[1], ',')[column("id_mismatch_vs_default")], "0.000000");
   EXPECT_GE(pareto, 1);
 
-  int width = 0, height = 0;
-  const std::vector<uint8_t> rgba = read_png_rgba8(png, width, height);
-  EXPECT_EQ(width, 960);
-  EXPECT_EQ(height, 600);
-  EXPECT_EQ(rgba.size(), size_t(960) * 600 * 4);
+  // The plot: a standalone 960x600 SVG with one point group per setting.
+  std::ifstream plot_file(svg);
+  const std::string plot((std::istreambuf_iterator<char>(plot_file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(plot.rfind("<?xml", 0), 0u);
+  EXPECT_NE(plot.find("width=\"960\" height=\"600\""), std::string::npos);
+  size_t points = 0;
+  for (size_t at = plot.find("<g class=\"point\">"); at != std::string::npos; at = plot.find("<g class=\"point\">", at + 1)) {
+    ++points;
+  }
+  EXPECT_EQ(points, settings.size());
+  EXPECT_NE(plot.find("Pareto front"), std::string::npos);
 }
 
 TEST(SweepCli, BadArgumentsGiveOneErrorLineAndWriteNothing) {
   const fs::path dir = temp_folder() / "bad";
-  const std::string outputs = " --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.png").string();
+  const std::string outputs = " --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.svg").string();
   const std::string base = "sweep --scene " + kDemo + " --size 32x18 --frames 1";
   struct Case {
     std::string args, expected;
   };
   const Case cases[] = {
       {base + " --spp 5" + outputs, "5"},
-      {base + " --spp 4 --csv " + (dir / "s.txt").string() + " --plot " + (dir / "s.png").string(), ".csv"},
-      {base + " --spp 4 --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.jpg").string(), ".png"},
+      {base + " --spp 4 --csv " + (dir / "s.txt").string() + " --plot " + (dir / "s.svg").string(), ".csv"},
+      {base + " --spp 4 --csv " + (dir / "s.csv").string() + " --plot " + (dir / "s.png").string(), ".svg"},
       {"sweep --scene " + kDemo + " --frames 0 --spp 4" + outputs, "frames"},
   };
   for (const Case& c : cases) {
@@ -98,7 +104,7 @@ TEST(SweepCli, BadArgumentsGiveOneErrorLineAndWriteNothing) {
     EXPECT_NE(r.exit_code, 0) << c.args;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
     EXPECT_FALSE(fs::exists(dir / "s.csv")) << c.args;
-    EXPECT_FALSE(fs::exists(dir / "s.png")) << c.args;
+    EXPECT_FALSE(fs::exists(dir / "s.svg")) << c.args;
   }
 }
 

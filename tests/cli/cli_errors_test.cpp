@@ -88,6 +88,14 @@ TEST_F(CliErrors, Render) {
           {"render --scene " + missing_scene + " --out " + out("x.png"), missing_scene},
           {"render --scene " + broken.string() + " --out " + out("x.png"), broken.string()},
           {"render --scene " + kDemo, "--out"},
+          {base + " --html " + out("no/r.html"), "--html"},
+          {base + " --html " + out("r.htm"), "--html"},
+          {base + " --html " + out("x.png"), "--html"},
+          {base + " --html -", "--html"},
+          {base + " --dump-attachments " + out("none"), "--dump-attachments"},
+          {base + " --tile-grid", "--tile-grid"},
+          {"render --scene " + kDemo + " --out " + out("x.exr") + " --aov depth --html " + out("r.html"), "--html"},
+          {"render --scene " + missing_scene + " --out " + out("x.png") + " --html " + out("r.html"), missing_scene},
       },
       scratch_, out_);
 }
@@ -143,7 +151,7 @@ TEST_F(CliErrors, ReferenceAndAccuracy) {
 TEST_F(CliErrors, StudyAndSweep) {
   const std::string study = "study deferred --scene " + kDemo + " --size 32x18";
   const std::string sweep = "sweep --scene " + kDemo + " --size 32x18 --frames 1 --spp 4";
-  const std::string outputs = " --csv " + out("s.csv") + " --plot " + out("s.png");
+  const std::string outputs = " --csv " + out("s.csv") + " --plot " + out("s.svg");
   expect_usage_errors(
       {
           {"study", "expected one of deferred"},
@@ -158,12 +166,12 @@ TEST_F(CliErrors, StudyAndSweep) {
           {"study architecture --scene " + kDemo + " --size 32x18 --json " + out("no/a.json"), "--json"},
           {"study deferred --scene " + kDemo + " --size 2x", "--size"},
           {sweep + " --spp 5" + outputs, "--spp"},
-          {sweep + " --csv " + out("s.txt") + " --plot " + out("s.png"), "--csv"},
-          {sweep + " --csv " + out("s.csv") + " --plot " + out("s.jpg"), "--plot"},
-          {sweep + " --csv " + out("s.csv") + " --plot " + out("no/s.png"), "--plot"},
+          {sweep + " --csv " + out("s.txt") + " --plot " + out("s.svg"), "--csv"},
+          {sweep + " --csv " + out("s.csv") + " --plot " + out("s.png"), "--plot"},
+          {sweep + " --csv " + out("s.csv") + " --plot " + out("no/s.svg"), "--plot"},
           {sweep + " --csv " + out("s.csv") + " --plot -", "--plot"},
           {"sweep --scene " + kDemo + " --size 99999999999x1" + outputs, "--size"},
-          {sweep + " --plot " + out("s.png"), "--csv"},
+          {sweep + " --plot " + out("s.svg"), "--csv"},
       },
       scratch_, out_);
 }

@@ -119,6 +119,9 @@ void FrameExecutor::close_pass() {
   arena_.execute([&] {
     frame_.passes.push_back(execute_render_pass(pass.desc, config_.tiler, texture_cache_));
   });
+  if (config_.pass_observer) {
+    config_.pass_observer->pass_executed(frame_.passes.size() - 1, pass.desc, frame_.passes.back());
+  }
   vertex_shaders_.clear();
   fragment_shaders_.clear();
   textures_.clear();

@@ -1,10 +1,8 @@
-// A scatter plot rasterised into a Canvas: axes with rounded ticks, one colour per series, a
-// text label per point, a legend, and the Pareto-optimal points ringed and joined in x order.
+// A scatter chart as SVG: axes with rounded ticks, one colour per series, a text label per
+// point, a legend, and the Pareto-optimal points ringed and joined in x order.
 #pragma once
 #include <string>
 #include <vector>
-
-#include "analysis/canvas.h"
 
 namespace ontile {
 
@@ -22,9 +20,10 @@ struct PlotSpec {
   int width_px = 960, height_px = 600;
 };
 
-// Throws ontile::Error when there are no points, a coordinate is not finite, or a point names a
-// series that does not exist.
-Canvas render_scatter_plot(const PlotSpec& spec);
+// The chart as a standalone SVG file (or an inline <svg> element when standalone_file is false).
+// Throws ontile::Error when there are no points, a coordinate is not finite, a point names a
+// series that does not exist, or the size leaves no room for the plot area.
+std::string scatter_chart_svg(const PlotSpec& spec, bool standalone_file = true);
 
 // Axis range and tick step covering [lo, hi] with about `ticks` steps of 1, 2 or 5 x 10^k;
 // the range starts and ends on a tick. lo == hi widens to a unit-sized range around them.
@@ -32,5 +31,8 @@ struct AxisTicks {
   double lo = 0.0, hi = 1.0, step = 0.1;
 };
 AxisTicks nice_axis(double lo, double hi, int ticks);
+
+// Tick label for `value` with as many decimals as `step` needs ("0.05" -> 2 decimals).
+std::string tick_text(double value, double step);
 
 }  // namespace ontile

@@ -1,0 +1,22 @@
+// A hook into frame execution for tools that show what each render pass did (the HTML report,
+// --dump-attachments): called after every render pass has run, while its surfaces still hold
+// what the pass left in them. Off unless a ContextConfig names an observer.
+#pragma once
+#include <cstddef>
+
+#include "tiler/pass_report.h"
+#include "tiler/render_pass.h"
+
+namespace ontile {
+
+class PassObserver {
+ public:
+  virtual ~PassObserver() = default;
+  // `index` is the pass's position in the frame's FrameReport::passes (0 starts a new frame).
+  // `desc` is the pass as it ran: attachments bound to surfaces (external memory) hold their
+  // contents after its store; transient attachments (surface null) lived in tile memory only
+  // and have no contents left to show. Surfaces may change in later passes: copy what you keep.
+  virtual void pass_executed(size_t index, const RenderPassDesc& desc, const PassReport& report) = 0;
+};
+
+}  // namespace ontile
