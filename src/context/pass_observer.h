@@ -14,9 +14,14 @@ class PassObserver {
   virtual ~PassObserver() = default;
   // `index` is the pass's position in the frame's FrameReport::passes (0 starts a new frame).
   // `desc` is the pass as it ran: attachments bound to surfaces (external memory) hold their
-  // contents after its store; transient attachments (surface null) lived in tile memory only
-  // and have no contents left to show. Surfaces may change in later passes: copy what you keep.
+  // contents after its store; transient attachments (surface null) lived in tile memory only,
+  // and are shown in desc.capture_surfaces when wants_tile_contents() said so (every attachment
+  // then has one, valid during this call). Surfaces may change in later passes: copy what you
+  // keep.
   virtual void pass_executed(size_t index, const RenderPassDesc& desc, const PassReport& report) = 0;
+  // Whether the executor should copy what every tile held at the end of each pass, transient
+  // attachments included, into desc.capture_surfaces (costs a copy per tile; no traffic).
+  virtual bool wants_tile_contents() const { return false; }
 };
 
 }  // namespace ontile

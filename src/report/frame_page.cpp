@@ -79,6 +79,7 @@ void attachment_figures(std::ostringstream& out, const FramePage& page, const Ca
     }
     out << "<figcaption><b>" << esc(a.name) << "</b> " << format_name(a.format) << ", " << esc(a.load) << " &#8594; "
         << esc(a.store) << (a.transient ? ", transient" : ", memory");
+    if (a.contents && a.transient) out << "<br><i>what the tiles held at the end of the pass; never written to memory</i>";
     if (a.contents) out << "<br><i>" << esc(view_description(a.format)) << "</i>";
     out << "</figcaption></figure>\n";
     if (a.resolved) {

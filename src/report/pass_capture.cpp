@@ -41,6 +41,9 @@ void PassCapture::pass_executed(size_t index, const RenderPassDesc& desc, const 
     c.transient = a.surface == nullptr;
     c.depth = static_cast<int>(i) == desc.depth_index;
     if (copy_contents_ && a.surface) c.contents = std::make_shared<const Surface>(*a.surface);
+    // A transient attachment never reaches memory: what its tiles held at the end of the pass.
+    const Surface* tile_copy = i < desc.capture_surfaces.size() ? desc.capture_surfaces[i] : nullptr;
+    if (copy_contents_ && !a.surface && tile_copy) c.contents = std::make_shared<const Surface>(*tile_copy);
     if (copy_contents_ && a.resolve_surface) c.resolved = std::make_shared<const Surface>(*a.resolve_surface);
     pass.attachments.push_back(std::move(c));
   }

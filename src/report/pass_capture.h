@@ -1,6 +1,7 @@
 // What each render pass of a frame left in its attachments, captured through the context's
 // PassObserver hook for the HTML report and --dump-attachments: the pass's attachments with
-// their load/store actions and a copy of every surface-backed one after the pass.
+// their load/store actions and a copy of every attachment after the pass (transient ones from
+// the tiles' inspection copies).
 #pragma once
 #include <memory>
 #include <string>
@@ -15,9 +16,9 @@ struct CapturedAttachment {
   std::string name;
   PixelFormat format = PixelFormat::RGBA8_UNORM;
   std::string load, store;  // "load", "clear", "dont-care"; "store", "dont-care", "resolve", "store+resolve"
-  bool transient = false;   // tile memory only: nothing to show after the pass
+  bool transient = false;   // tile memory only: contents are what its tiles held at the pass's end
   bool depth = false;
-  std::shared_ptr<const Surface> contents;  // the surface after the pass; null when transient
+  std::shared_ptr<const Surface> contents;  // the surface after the pass (transient: the tiles' copy)
   std::shared_ptr<const Surface> resolved;  // the resolve target after the pass, if any
 };
 
@@ -39,6 +40,7 @@ class PassCapture : public PassObserver {
  public:
   explicit PassCapture(bool copy_contents = true) : copy_contents_(copy_contents) {}
   void pass_executed(size_t index, const RenderPassDesc& desc, const PassReport& report) override;
+  bool wants_tile_contents() const override { return copy_contents_; }
   const std::vector<CapturedPass>& passes() const { return passes_; }
 
  private:

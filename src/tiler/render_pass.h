@@ -57,6 +57,11 @@ struct RenderPassDesc {
   std::vector<AttachmentDesc> attachments;
   int depth_index = -1;  // attachment index of the depth buffer, -1 = none
   std::vector<SubpassDesc> subpasses;
+  // For inspection tools only (the HTML report): empty, or one entry per attachment; a non-null
+  // surface (the pass's size and samples, the attachment's format) receives what the tiles held
+  // at the end of the pass, transient attachments included. Not external memory: no traffic is
+  // counted and nothing else changes.
+  std::vector<Surface*> capture_surfaces;
 };
 
 }  // namespace ontile

@@ -116,6 +116,15 @@ SubpassDesc& FrameExecutor::current_subpass(const char* what) {
 void FrameExecutor::close_pass() {
   OpenPass pass = std::move(*pass_);
   pass_.reset();
+  // Inspection copies of what every tile held (the HTML report shows transient attachments).
+  std::vector<std::unique_ptr<Surface>> captures;
+  if (config_.pass_observer && config_.pass_observer->wants_tile_contents()) {
+    for (const AttachmentDesc& a : pass.desc.attachments) {
+      captures.push_back(std::make_unique<Surface>(a.name, a.format, pass.desc.width_px, pass.desc.height_px,
+                                                   pass.desc.samples));
+      pass.desc.capture_surfaces.push_back(captures.back().get());
+    }
+  }
   arena_.execute([&] {
     frame_.passes.push_back(execute_render_pass(pass.desc, config_.tiler, texture_cache_));
   });

@@ -115,11 +115,32 @@ void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& mem
   }
 }
 
+namespace {
+
+// What the tile holds of attachment `a`, every sample, into an inspection surface
+// (RenderPassDesc::capture_surfaces): a debugging copy, not a store, so it is not counted.
+void capture_tile(Surface& capture, bool is_depth, const TileRect& rect, const TileMemory& memory, int a) {
+  for (int ly = 0; ly < rect.height; ++ly) {
+    for (int lx = 0; lx < rect.width; ++lx) {
+      for (int s = 0; s < memory.samples(); ++s) {
+        const size_t i = memory.index(lx, ly, s);
+        capture.write(rect.x0 + lx, rect.y0 + ly, s,
+                      is_depth ? glm::vec4(memory.depth_plane()[i], 0.0f, 0.0f, 1.0f) : memory.color_plane(a)[i]);
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void store_tile(const RenderPassDesc& pass, const TileRect& rect, const TileMemory& memory) {
   const int samples = memory.samples();
   for (size_t a = 0; a < pass.attachments.size(); ++a) {
     const AttachmentDesc& desc = pass.attachments[a];
     const bool is_depth = static_cast<int>(a) == pass.depth_index;
+    if (a < pass.capture_surfaces.size() && pass.capture_surfaces[a]) {
+      capture_tile(*pass.capture_surfaces[a], is_depth, rect, memory, static_cast<int>(a));
+    }
     const bool store = (desc.store == StoreAction::Store ||
                         desc.store == StoreAction::StoreAndResolve) && desc.surface != nullptr;
     const bool resolve = (desc.store == StoreAction::Resolve ||
