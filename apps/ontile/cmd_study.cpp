@@ -13,6 +13,23 @@
 namespace ontile::cli {
 namespace {
 
+// --markdown and --json of a study verb, checked before any work.
+void check_study_outputs(const std::string& markdown, const std::string& json) {
+  if (!markdown.empty()) check_output_option("--markdown", markdown, true);
+  if (!json.empty()) check_output_option("--json", json, true);
+  check_distinct_outputs({{"--markdown", markdown}, {"--json", json}});
+}
+
+// The tables go to standard output unless the JSON does; --markdown - asks for nothing more.
+void write_study_outputs(const std::string& markdown_path, const std::string& json_path, const std::string& md,
+                         const nlohmann::json& json) {
+  RunOutputs outputs;
+  if (!markdown_path.empty() && !is_stdout(markdown_path)) outputs.text(markdown_path, md);
+  if (!json_path.empty()) outputs.text(json_path, json.dump(2) + "\n");
+  outputs.commit();
+  std::fputs(md.c_str(), is_stdout(json_path) ? stderr : stdout);
+}
+
 struct StudyOptions {
   std::string scene, size = "2220x1080", markdown, json;
   bool allow_outside_files = false, progress = false;
@@ -22,22 +39,15 @@ struct StudyOptions {
 void run_deferred_study(const StudyOptions& o) {
   StudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
-  if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
-  if (!o.json.empty()) check_output_option("--json", o.json, true);
-  if (!o.markdown.empty() && !o.json.empty()) check_distinct_outputs({{"--markdown", o.markdown}, {"--json", o.json}});
+  check_study_outputs(o.markdown, o.json);
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
   Progress progress("study", o.progress);
   s.progress = progress.callback();
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
   const std::string scene_name = std::filesystem::path(o.scene).filename().string();
-  const std::string md = deferred_study_markdown(rows, s, scene_name);
-  // The tables go to standard output unless the JSON does; --markdown - asks for nothing more.
-  RunOutputs outputs;
-  if (!o.markdown.empty() && !is_stdout(o.markdown)) outputs.text(o.markdown, md);
-  if (!o.json.empty()) outputs.text(o.json, deferred_study_json(rows, s, scene_name).dump(2) + "\n");
-  outputs.commit();
-  std::fputs(md.c_str(), is_stdout(o.json) ? stderr : stdout);
+  write_study_outputs(o.markdown, o.json, deferred_study_markdown(rows, s, scene_name),
+                      deferred_study_json(rows, s, scene_name));
 }
 
 struct ArchitectureOptions {
@@ -49,20 +59,14 @@ struct ArchitectureOptions {
 void run_architecture_study_command(const ArchitectureOptions& o) {
   ArchitectureStudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
-  if (!o.markdown.empty()) check_output_option("--markdown", o.markdown, true);
-  if (!o.json.empty()) check_output_option("--json", o.json, true);
-  check_distinct_outputs({{"--markdown", o.markdown}, {"--json", o.json}});
+  check_study_outputs(o.markdown, o.json);
   const Scene scene = load_scene(o.scene, o.allow_outside_files);
   Progress progress("study", o.progress);
   s.progress = progress.callback();
   const std::vector<ArchitectureRow> rows = run_architecture_study(scene, s);
   const std::string scene_name = std::filesystem::path(o.scene).filename().string();
-  const std::string md = architecture_study_markdown(rows, s, scene_name);
-  RunOutputs outputs;
-  if (!o.markdown.empty() && !is_stdout(o.markdown)) outputs.text(o.markdown, md);
-  if (!o.json.empty()) outputs.text(o.json, architecture_study_json(rows, s, scene_name).dump(2) + "\n");
-  outputs.commit();
-  std::fputs(md.c_str(), is_stdout(o.json) ? stderr : stdout);
+  write_study_outputs(o.markdown, o.json, architecture_study_markdown(rows, s, scene_name),
+                      architecture_study_json(rows, s, scene_name));
 }
 
 void add_architecture_study(CLI::App* study) {

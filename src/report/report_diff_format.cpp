@@ -6,6 +6,8 @@
 
 #include "report/report_diff.h"
 
+#include "charts/svg_writer.h"
+
 namespace ontile {
 namespace {
 
@@ -34,19 +36,7 @@ std::vector<Section> sections(const ReportDiff& d) {
           {"attachments per pass (pass / attachment)", &d.attachments}};
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string html_escape(const std::string& text) { return xml_escape(text); }
 
 }  // namespace
 
