@@ -5,22 +5,20 @@
 
 #include "pipelines/kit/pipeline.h"
 #include "pipelines/kit/render_frame.h"
+#include "studies/study_format.h"
 
 namespace ontile {
 namespace {
 
-constexpr double kMiB = 1024.0 * 1024.0;
+using study_format::category;
+using study_format::fixed;
+using study_format::kMiB;
+
 // Antochi et al. 2004: tile-based rendering moved about 1.96x less external traffic than
 // immediate mode on their workloads, and 32x32 tiles were the best trade-off.
 constexpr double kPublishedImrOverTbdr = 1.96;
 constexpr int kPublishedBestTilePx = 32;
 constexpr int kImrBlockPx = 16;
-
-std::string fixed(double v, int decimals) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
 
 ArchitectureRow render_row(const Scene& scene, const ArchitectureStudySettings& s, const std::string& pipeline,
                            bool imr, int tile_size_px) {
@@ -74,11 +72,6 @@ std::map<std::string, PipelineRows> by_pipeline(const std::vector<ArchitectureRo
 }
 
 double ratio(uint64_t a, uint64_t b) { return b ? static_cast<double>(a) / static_cast<double>(b) : 0.0; }
-
-uint64_t category(const ArchitectureRow& r, const char* name) {
-  const auto it = r.bytes_by_category.find(name);
-  return it == r.bytes_by_category.end() ? 0 : it->second;
-}
 
 }  // namespace
 

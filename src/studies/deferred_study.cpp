@@ -5,12 +5,16 @@
 #include <cstdio>
 
 #include "pipelines/kit/render_frame.h"
+#include "studies/study_format.h"
 #include "util/error.h"
 
 namespace ontile {
 namespace {
 
-constexpr double kMiB = 1024.0 * 1024.0;
+using study_format::category;
+using study_format::find_row;
+using study_format::fixed;
+using study_format::kMiB;
 
 // Published Mali-G76 measurements, Khronos Vulkan-Samples (render_subpasses tutorial; rates in
 // MiB/s at 2220x1080, each at its own frame rate), as summed up in ../shared/REFERENCES.md.
@@ -31,23 +35,6 @@ std::string mib(uint64_t bytes) {
   return s;
 }
 
-std::string fixed(double v, int decimals) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, v);
-  return s;
-}
-
-uint64_t category(const StudyRow& r, const char* name) {
-  const auto it = r.bytes_by_category.find(name);
-  return it == r.bytes_by_category.end() ? 0 : it->second;
-}
-
-const StudyRow* find_row(const std::vector<StudyRow>& rows, const std::string& label) {
-  for (const StudyRow& r : rows) {
-    if (r.variant.label == label) return &r;
-  }
-  return nullptr;
-}
 
 }  // namespace
 

@@ -2,19 +2,14 @@
 // Markdown tables.
 #include "studies/deferred_study.h"
 
+#include "studies/study_format.h"
+
 namespace ontile {
 namespace {
 
 // Two render passes over subpasses per frame on the same view, Mali-G76 (Vulkan-Samples
 // render_subpasses; rates divided by each variant's frame rate, ../shared/REFERENCES.md).
 constexpr double kMaliReadRatio = 2.00, kMaliWriteRatio = 3.93, kMaliTotalRatio = 2.49;
-
-const StudyRow* find_variant(const std::vector<StudyRow>& rows, const std::string& label) {
-  for (const StudyRow& r : rows) {
-    if (r.variant.label == label) return &r;
-  }
-  return nullptr;
-}
 
 nlohmann::json variant_json(const StudyRow& r) {
   nlohmann::json options = nlohmann::json::object();
@@ -48,8 +43,8 @@ nlohmann::json deferred_study_json(const std::vector<StudyRow>& rows, const Stud
                          {"lights", s.lights},
                          {"parameter_cache_kib", s.parameter_cache_kib},
                          {"variants", variants}};
-  const StudyRow* two_passes = find_variant(rows, "two render passes");
-  const StudyRow* subpasses = find_variant(rows, "subpasses, transient");
+  const StudyRow* two_passes = study_format::find_row(rows, std::string("two render passes"));
+  const StudyRow* subpasses = study_format::find_row(rows, std::string("subpasses, transient"));
   if (two_passes && subpasses && subpasses->bytes_read > 0 && subpasses->bytes_written > 0) {
     const auto ratio = [](uint64_t a, uint64_t b) { return static_cast<double>(a) / static_cast<double>(b); };
     json["ratios"] = {
