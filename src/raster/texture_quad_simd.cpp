@@ -159,7 +159,7 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
     u[lane] = in.uv[lane].x;
     v[lane] = in.uv[lane].y;
   }
-  Footprints fp;
+  Footprints fp{};  // level 1 stays zero with one level (its lanes are filtered, not used)
   alignas(16) int32_t taps[2][4][kLanes];  // [level][tap][lane] texel index in the level
   for (int l = 0; l < in.level_count; ++l) {
     const Texture2D::Level& level = *in.levels[l];
@@ -173,48 +173,63 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
     footprint_taps(di, level, fp.i0[l], fp.j0[l], in.wrap_u, in.wrap_v, taps[l]);
   }
   if (in.trace) record_trace(in, taps);
-  // Texels: one 32-bit RGBA8 load per tap and lane, then each channel decoded through its table
-  // on the lanes at once.
-  alignas(16) int32_t packed[2][4][kLanes];  // [level][tap][lane]
+  // Texels: one 32-bit RGBA8 load per tap, level and lane, laid out [tap][level * 4 + lane] so
+  // that both levels' bilinear filters run on the same 8 lanes (two 4-lane vectors on targets
+  // with 128-bit vectors); each channel is decoded through its table on the lanes at once. A
+  // lane's operations are those of the one-level filter, so every target gives the same bits.
+  constexpr int kPairs = 2 * kLanes;  // (level, lane)
+  const size_t n = hn::Lanes(d);
+  alignas(32) int32_t packed[4][kPairs] = {};
   for (int l = 0; l < in.level_count; ++l) {
     const uint8_t* texels = in.levels[l]->bytes8();
+    if (reinterpret_cast<uintptr_t>(texels) % alignof(int32_t) == 0) {
+      // Texel t of a level is the int32 at index t: gathered on lanes.
+      const int32_t* words = reinterpret_cast<const int32_t*>(texels);
+      for (int t = 0; t < 4; ++t) {
+        for (size_t i = 0; i < kLanes; i += n) {
+          hn::Store(hn::GatherIndex(di, words, hn::Load(di, taps[l][t] + i)), di,
+                    packed[t] + l * kLanes + i);
+        }
+      }
+      continue;
+    }
     for (int t = 0; t < 4; ++t) {
       for (int lane = 0; lane < kLanes; ++lane) {
-        std::memcpy(&packed[l][t][lane], texels + static_cast<size_t>(taps[l][t][lane]) * 4, 4);
+        std::memcpy(&packed[t][l * kLanes + lane], texels + static_cast<size_t>(taps[l][t][lane]) * 4, 4);
       }
     }
   }
-  const size_t n = hn::Lanes(d);
-  const auto byte_mask = hn::Set(di, 0xFF);
+  const hn::CappedTag<float, kPairs> d8;
+  const hn::RebindToSigned<decltype(d8)> di8;
+  const size_t n8 = hn::Lanes(d8);
+  const auto byte_mask = hn::Set(di8, 0xFF);
+  const auto one8 = hn::Set(d8, 1.0f);
+  alignas(32) float filtered[4][kPairs];  // [channel][level * 4 + lane]
+  for (size_t i = 0; i < static_cast<size_t>(in.level_count * kLanes); i += n8) {
+    hn::Vec<decltype(d8)> tap_value[4][4];  // [tap][channel]
+    for (int t = 0; t < 4; ++t) {
+      const auto p = hn::Load(di8, packed[t] + i);
+      tap_value[t][0] = hn::GatherIndex(d8, in.rgb_decode, hn::And(p, byte_mask));
+      tap_value[t][1] = hn::GatherIndex(d8, in.rgb_decode, hn::And(hn::ShiftRight<8>(p), byte_mask));
+      tap_value[t][2] = hn::GatherIndex(d8, in.rgb_decode, hn::And(hn::ShiftRight<16>(p), byte_mask));
+      tap_value[t][3] = hn::GatherIndex(d8, in.alpha_decode, hn::And(hn::ShiftRight<24>(p), byte_mask));
+    }
+    const auto a = hn::LoadU(d8, &fp.a[0][0] + i), b = hn::LoadU(d8, &fp.b[0][0] + i);
+    const auto one_a = hn::Sub(one8, a), one_b = hn::Sub(one8, b);
+    for (int c = 0; c < 4; ++c) {
+      const auto top = hn::Add(hn::Mul(tap_value[0][c], one_a), hn::Mul(tap_value[1][c], a));
+      const auto bottom = hn::Add(hn::Mul(tap_value[2][c], one_a), hn::Mul(tap_value[3][c], a));
+      hn::Store(hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, b)), d8, filtered[c] + i);
+    }
+  }
   const auto one = hn::Set(d, 1.0f);
   alignas(16) float result[4][kLanes];
   for (size_t i = 0; i < kLanes; i += n) {
-    hn::Vec<decltype(d)> level_value[2][4];  // [level][channel]
-    for (auto& level : level_value) {
-      for (auto& channel : level) channel = hn::Zero(d);  // level 1 stays unused with one level
-    }
-    for (int l = 0; l < in.level_count; ++l) {
-      hn::Vec<decltype(d)> tap_value[4][4];  // [tap][channel]
-      for (int t = 0; t < 4; ++t) {
-        const auto p = hn::Load(di, packed[l][t] + i);
-        tap_value[t][0] = hn::GatherIndex(d, in.rgb_decode, hn::And(p, byte_mask));
-        tap_value[t][1] = hn::GatherIndex(d, in.rgb_decode, hn::And(hn::ShiftRight<8>(p), byte_mask));
-        tap_value[t][2] = hn::GatherIndex(d, in.rgb_decode, hn::And(hn::ShiftRight<16>(p), byte_mask));
-        tap_value[t][3] = hn::GatherIndex(d, in.alpha_decode, hn::And(hn::ShiftRight<24>(p), byte_mask));
-      }
-      const auto a = hn::LoadU(d, fp.a[l] + i), b = hn::LoadU(d, fp.b[l] + i);
-      const auto one_a = hn::Sub(one, a), one_b = hn::Sub(one, b);
-      for (int c = 0; c < 4; ++c) {
-        const auto top = hn::Add(hn::Mul(tap_value[0][c], one_a), hn::Mul(tap_value[1][c], a));
-        const auto bottom = hn::Add(hn::Mul(tap_value[2][c], one_a), hn::Mul(tap_value[3][c], a));
-        level_value[l][c] = hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, b));
-      }
-    }
     for (int c = 0; c < 4; ++c) {
-      auto value = level_value[0][c];
+      auto value = hn::Load(d, filtered[c] + i);
       if (in.level_count == 2) {
         const auto w = hn::Set(d, in.blend);
-        value = hn::Add(hn::Mul(level_value[0][c], hn::Sub(one, w)), hn::Mul(level_value[1][c], w));
+        value = hn::Add(hn::Mul(value, hn::Sub(one, w)), hn::Mul(hn::Load(d, filtered[c] + kLanes + i), w));
       }
       hn::Store(value, d, result[c] + i);
     }
