@@ -16,6 +16,7 @@ CONFIG (JSON):
 import argparse
 import csv
 import hashlib
+import importlib
 import io
 import itertools
 import json
@@ -151,6 +152,9 @@ def run_dask(tasks, workers=None, scheduler=None, timings=False):
                                dashboard_address=None)
         client = Client(cluster)
     try:
+        # A worker that cannot import ontile could not even unpickle a task (which would then
+        # wait forever): check every worker first, so that the error comes back here.
+        client.run(importlib.import_module, "ontile.sweep")
         futures = client.map(sweep.render_configuration, tasks, timings=timings, pure=False)
         return client.gather(futures)
     finally:
@@ -221,6 +225,10 @@ def main(argv=None):
             tasks, args.workers, args.scheduler, args.timings)
     except ValueError as e:  # ontile.Error: a scene, pipeline or option the config names is bad
         print(f"error: {args.config}: {e}", file=sys.stderr)
+        return 2
+    except Exception as e:  # the cluster: unreachable, or workers that cannot import ontile
+        where = f"--scheduler {args.scheduler}" if args.scheduler else "LocalCluster"
+        print(f"error: {where}: {type(e).__name__}: {e}", file=sys.stderr)
         return 2
     columns, table = make_table(tasks, rows)
     outputs = [(args.csv, csv_text), (args.json, json_text)]
