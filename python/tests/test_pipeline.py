@@ -6,7 +6,7 @@ import os
 import sys
 import unittest
 
-from ontile_test_env import DEMO, SOURCE_DIR, needs_module, ontile, without_timing
+from ontile_test_env import DEMO, SOURCE_DIR, needs_module, ontile, output_dir, without_timing
 
 sys.path.insert(0, os.path.join(SOURCE_DIR, "python", "examples"))
 if ontile is not None:
@@ -44,6 +44,25 @@ class PythonPipelinesEqualCpp(unittest.TestCase):
 
     def test_cartoon_hull_with_a_transient_attachment(self):
         self.assertSameFrame(CartoonHullPipeline(), "cartoon-hull", {"arch": "imr"})
+
+
+class FloatTarget(ontile.Pipeline if ontile else object):
+    """Lit forward shading into a half-float colour target: the image comes back as float32."""
+    name = "float-target"
+
+    def render(self, frame):
+        lit = frame.shaders("lit")
+        culling = frame.cull(lit)
+        frame.set_globals(lit)
+        color = frame.create_target("color", "rgba16f")
+        frame.begin_render_pass("forward", [ontile.Attachment.stored("color", color).clear(lit.background_color),
+                                            ontile.Attachment.transient("depth", "d32f").clear_depth(1.0)],
+                                depth_index=1)
+        frame.begin_subpass([0])
+        frame.draw_renderers(culling, ["ForwardLit"], "common_opaque", "opaque")
+        frame.end_subpass()
+        frame.end_render_pass()
+        frame.submit(color)
 
 
 class NoSubmit(ontile.Pipeline if ontile else object):
@@ -96,6 +115,16 @@ class MisuseRaises(unittest.TestCase):
 
     def render(self, pipeline, **kwargs):
         return ontile.render(self.scene, pipeline=pipeline, size=(16, 16), **kwargs)
+
+    def test_float_target_gives_float32_and_no_png(self):
+        result = self.render(FloatTarget())
+        self.assertEqual(result.format, "rgba16f")
+        self.assertEqual((result.image.shape, str(result.image.dtype)), ((16, 16, 4), "float32"))
+        background = [round(float(v), 3) for v in result.image[0, 0]]
+        self.assertEqual(background, [0.05, 0.05, 0.08, 1.0])  # the Lit background, as half floats
+        self.assertGreater(len({tuple(p) for p in result.image.reshape(-1, 4).tolist()}), 10)
+        with self.assertRaisesRegex(ValueError, "PNG needs an 8-bit target"):
+            result.write_png(os.path.join(output_dir("pipeline"), "float.png"))
 
     def test_render_without_submit(self):
         with self.assertRaisesRegex(ValueError, "without frame.submit"):
