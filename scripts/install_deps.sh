@@ -6,11 +6,14 @@ packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libt
           libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
           libstb-dev openimageio-tools libhwy-dev
           libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
-          python3 python3-jsonschema chromium)
+          python3 python3-jsonschema chromium
+          pybind11-dev python3-dev python3-numpy python3-distributed)
 # openimageio-tools: Debian's OpenImageIO CMake config references its command-line tools.
 # libegl-dev, libgles-dev, libegl-mesa0, libgl1-mesa-dri: EGL/GLES headers and Mesa's llvmpipe
 # for the peer benchmark (bench/llvmpipe/, scripts/peer_bench.sh).
 # python3-jsonschema: the tests check every render report against docs/report.schema.json.
+# pybind11-dev, python3-dev, python3-numpy, python3-distributed: the `ontile` Python module, its
+# NumPy images and sweeps on Dask (docs/python.md, docs/scaling.md).
 # chromium: the browser test opens `render --html` pages headless (HtmlBrowser.*; skipped without it).
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,21 @@
+// The options of ontile.render(options={...}): the `ontile render` flags by their names with
+// underscores (tile, budget, arch, render_graph, ...) and `set` for the pipeline's --set
+// options, checked against the same ranges and choices as the CLI.
+#pragma once
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "pipelines/kit/render_frame.h"
+
+namespace ontile::python {
+
+struct ParsedOptions {
+  RenderSettings settings;
+  bool tile_report = false;  // --tiles
+};
+
+// Throws ontile::Error (ValueError in Python) naming the key for an unknown key or bad value.
+ParsedOptions parse_render_options(const pybind11::dict& options, ParsedOptions parsed);
+
+}  // namespace ontile::python

@@ -1,0 +1,109 @@
+"""ontile.render from Python against `ontile render`: the same PNG bytes and the same report
+(minus timings) for the same options; bad options raise ValueError."""
+import os
+import unittest
+
+from ontile_test_env import DEMO, cli_render, needs_module, ontile, output_dir, without_timing
+
+SIZE = (160, 90)
+
+
+@needs_module
+class RenderMatchesCli(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scene = ontile.load_scene(DEMO)
+        cls.out = output_dir("render")
+
+    def check_same_as_cli(self, name, pipeline, cli_args, options, threads=0):
+        cli_png, cli_report = cli_render(self.out, name + "-cli", ["--pipeline", pipeline, "--size", "160x90"] + cli_args)
+        result = ontile.render(self.scene, pipeline=pipeline, size=SIZE, threads=threads, options=options)
+        self.assertEqual(result.image.shape, (90, 160, 4))
+        self.assertEqual(str(result.image.dtype), "uint8")
+        png = os.path.join(self.out, name + "-python.png")
+        result.write_png(png)
+        with open(png, "rb") as f:
+            self.assertEqual(f.read(), cli_png, f"{name}: PNG bytes differ from the CLI's")
+        self.assertEqual(without_timing(result.report), without_timing(cli_report))
+        return result
+
+    def test_cartoon_with_tile_and_threads(self):
+        self.check_same_as_cli("cartoon", "cartoon", ["--tile", "32", "--threads", "2"], {"tile": 32}, threads=2)
+
+    def test_lambert_msaa_on_imr(self):
+        self.check_same_as_cli("lambert-imr", "lambert", ["--arch", "imr", "--set", "msaa=4", "--rt-cache-kib", "64"],
+                               {"arch": "imr", "set": {"msaa": 4}, "rt_cache_kib": 64})
+
+    def test_graph_example_merged_with_afbc_and_tile_report(self):
+        self.check_same_as_cli("graph-merge", "graph-example", ["--render-graph", "merge", "--afbc", "on", "--tiles"],
+                               {"render_graph": "merge", "afbc": "on", "tiles": True})
+
+    def test_deferred_shorthands(self):
+        self.check_same_as_cli("deferred", "deferred-subpass", ["--gbuffer", "vulkan-samples", "--lights", "8"],
+                               {"gbuffer": "vulkan-samples", "lights": 8})
+
+    def test_thread_count_changes_no_bit(self):
+        one = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=1)
+        seven = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=7)
+        self.assertEqual(one.image.tobytes(), seven.image.tobytes())
+        self.assertEqual(one.report["frame"], seven.report["frame"])
+
+    def test_view_matrix_of_the_first_camera_frames_the_same_view(self):
+        import numpy
+        world = self.scene.camera_to_world(0)
+        by_index = ontile.render(self.scene, pipeline="lambert", size=SIZE, camera=0)
+        by_view = ontile.render(self.scene, pipeline="lambert", size=SIZE, view=numpy.linalg.inv(world))
+        difference = numpy.abs(by_index.image.astype(int) - by_view.image.astype(int))
+        self.assertLess(difference.mean(), 0.5)  # the inverse of the inverse, to rounding
+        turned = world @ numpy.array([[0, 0, -1, 0], [0, 1, 0, 0], [1, 0, 0, 0], [0, 0, 0, 1]], dtype=float)
+        elsewhere = ontile.render(self.scene, pipeline="lambert", size=SIZE, view=numpy.linalg.inv(turned))
+        self.assertNotEqual(elsewhere.image.tobytes(), by_index.image.tobytes())
+
+    def test_pipelines_lists_the_registry(self):
+        names = ontile.pipelines()
+        self.assertEqual(names, sorted(names))
+        for name in ("lambert", "cartoon", "graph-example", "universal"):
+            self.assertIn(name, names)
+
+
+@needs_module
+class BadInputRaises(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scene = ontile.load_scene(DEMO)
+
+    def assertRaisesValue(self, fragment, **kwargs):
+        kwargs.setdefault("size", (16, 16))
+        with self.assertRaises(ValueError) as caught:
+            ontile.render(self.scene, **kwargs)
+        self.assertIn(fragment, str(caught.exception))
+
+    def test_unknown_option_key(self):
+        self.assertRaisesValue("unknown key 'tile_size'", options={"tile_size": 16})
+
+    def test_values_the_cli_refuses(self):
+        self.assertRaisesValue("options['tile']", options={"tile": 5})
+        self.assertRaisesValue("options['arch']", options={"arch": "gpu"})
+        self.assertRaisesValue("options['budget']", options={"budget": 8})
+        self.assertRaisesValue("options['render_graph']", options={"render_graph": "all"})
+        self.assertRaisesValue("options['tiles']", options={"tiles": 1})
+
+    def test_pipeline_rejects_unknown_set_option(self):
+        self.assertRaisesValue("has no option 'msa'", pipeline="lambert", options={"set": {"msa": 4}})
+
+    def test_unknown_pipeline_size_and_camera(self):
+        self.assertRaisesValue("unknown pipeline 'cartoonish'", pipeline="cartoonish")
+        self.assertRaisesValue("outside 1..", size=(0, 16))
+        self.assertRaisesValue("camera 99 out of range", camera=99)
+        with self.assertRaises(ValueError):
+            ontile.render(self.scene, size="big")
+
+    def test_bad_scene_file(self):
+        with self.assertRaises(ontile.Error) as caught:
+            ontile.load_scene(os.path.join(output_dir("render"), "missing.glb"))
+        self.assertIsInstance(caught.exception, ValueError)
+        self.assertIn("missing.glb", str(caught.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
