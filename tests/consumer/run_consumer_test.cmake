@@ -1,7 +1,8 @@
 # The installable package end to end (ctest: Package.ConsumerBuildsAgainstTheInstall): installs
 # the build into a temporary prefix, configures and builds tests/consumer/ against it with
 # find_package(ontile), runs it, and checks that its frame is the CLI's: the same bytes written
-# and read (from `ontile render --report`) and the same image (`ontile compare`, bit for bit).
+# and read (from `ontile render --report`) and the same image (`ontile compare`, bit for bit);
+# then that the installed CLI's `golden` finds the installed demo scene and references.
 # cmake -DBUILD_DIR=<build> -DCONSUMER_DIR=<tests/consumer> -DWORK=<scratch> -DCXX=<compiler>
 #       [-DLAUNCHER=ccache] -P run_consumer_test.cmake
 function(run_step what)
@@ -46,5 +47,11 @@ foreach(key bytes_read bytes_written)
   endif()
 endforeach()
 run_step("ontile compare" ${prefix}/bin/ontile compare ${WORK}/consumer.png ${WORK}/cli.png)
+# The installed CLI finds its data beside itself (P/share/ontile): the built-in golden cases on the
+# demo match the installed references (the shared-asset cases are skipped: not installed).
+run_step("ontile golden (installed)" ${prefix}/bin/ontile golden --failures ${WORK}/golden_failures)
+if(NOT step_output MATCHES "demo_cartoon +match")
+  message(FATAL_ERROR "the installed golden run compared nothing:\n${step_output}")
+endif()
 message(STATUS "consumer frame identical to the CLI's (image and traffic)")
 file(REMOVE_RECURSE ${WORK})
