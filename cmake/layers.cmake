@@ -62,8 +62,10 @@ ontile_layer(tools FOLDERS aov analysis charts golden reference report studies
 
 # Everything, for the CLI, the tests, the benchmarks, the fuzzers and other projects (exported as
 # ontile::ontile; ontile::ontile is also its name for a parent project's add_subdirectory). The
-# determinism flags travel with it: headers hold inline arithmetic (shader functors, pixel
-# formats) that a consumer's compiler must not contract into fused multiply-adds either.
+# installed target carries the determinism flags: headers hold inline arithmetic (shader
+# functors, pixel formats) that a consumer's compiler must not contract into fused multiply-adds
+# either. (In this build add_compile_options already gives them to every target; a parent project
+# using add_subdirectory sets its own flags.)
 add_library(ontile_core INTERFACE)
 target_link_libraries(ontile_core INTERFACE ontile_tools)
 target_compile_features(ontile_core INTERFACE cxx_std_20)
