@@ -1,7 +1,8 @@
 # The installable package: `cmake --install build --prefix P` gives P/bin/ontile, the layer
 # libraries in P/lib, their headers under P/include/ontile/<folder>/ (included as "<folder>/..."),
 # the bundled scene and golden images in P/share/ontile, and P/lib/cmake/ontile/ontileConfig.cmake
-# so that `find_package(ontile 0.4 REQUIRED)` gives the target ontile::ontile (README, "Install").
+# so that `find_package(ontile 0.4 REQUIRED)` gives the target ontile::ontile and the CLI as
+# ontile::cli (README, "Install and use from another project").
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -23,11 +24,13 @@ endforeach()
 set(ONTILE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/ontile)
 set(ONTILE_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/ontile)
 
-install(TARGETS ontile RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The CLI is exported too, as ontile::cli, for tests such as add_test(COMMAND ontile::cli golden ...).
+set_target_properties(ontile PROPERTIES EXPORT_NAME cli)
+add_executable(ontile::cli ALIAS ontile)
 get_property(ontile_layer_targets GLOBAL PROPERTY ONTILE_LAYER_TARGETS)
 get_property(ontile_layer_folders GLOBAL PROPERTY ONTILE_LAYER_FOLDERS)
-install(TARGETS ${ontile_layer_targets} ontile_core EXPORT ontileTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS ontile ${ontile_layer_targets} ontile_core EXPORT ontileTargets
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 foreach(folder IN LISTS ontile_layer_folders)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/${folder} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ontile
           FILES_MATCHING PATTERN "*.h")

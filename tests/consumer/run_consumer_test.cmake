@@ -35,9 +35,14 @@ run_step("building the consumer" ${CMAKE_COMMAND} --build ${WORK}/build)
 run_step("running the consumer" ${WORK}/build/render_demo ${WORK}/consumer.png)
 set(consumer "${step_output}")
 message(STATUS "consumer:\n${consumer}")
+# The CLI as the package's imported target ontile::cli names it.
+file(READ ${WORK}/build/ontile_cli_path.txt cli)
+if(NOT cli STREQUAL "${prefix}/bin/ontile")
+  message(FATAL_ERROR "ontile::cli is '${cli}', not ${prefix}/bin/ontile")
+endif()
 
 # The same frame through the installed CLI, which finds its demo scene in share/ontile itself.
-run_step("ontile render" ${prefix}/bin/ontile render --scene ${prefix}/share/ontile/scenes/demo.glb
+run_step("ontile render" ${cli} render --scene ${prefix}/share/ontile/scenes/demo.glb
          --pipeline cartoon --size 320x180 --threads 2 --out ${WORK}/cli.png --report ${WORK}/cli.json)
 file(READ ${WORK}/cli.json report)
 foreach(key bytes_read bytes_written)
@@ -46,10 +51,10 @@ foreach(key bytes_read bytes_written)
     message(FATAL_ERROR "the consumer's ${key} differs from the CLI's ${expected}:\n${consumer}")
   endif()
 endforeach()
-run_step("ontile compare" ${prefix}/bin/ontile compare ${WORK}/consumer.png ${WORK}/cli.png)
+run_step("ontile compare" ${cli} compare ${WORK}/consumer.png ${WORK}/cli.png)
 # The installed CLI finds its data beside itself (P/share/ontile): the built-in golden cases on the
 # demo match the installed references (the shared-asset cases are skipped: not installed).
-run_step("ontile golden (installed)" ${prefix}/bin/ontile golden --failures ${WORK}/golden_failures)
+run_step("ontile golden (installed)" ${cli} golden --failures ${WORK}/golden_failures)
 if(NOT step_output MATCHES "demo_cartoon +match")
   message(FATAL_ERROR "the installed golden run compared nothing:\n${step_output}")
 endif()
