@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,12 @@ void add_accuracy_command(CLI::App& app);
 void add_study_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_diff_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
+
+// The folder of bundled data (scenes/demo.glb, golden/, assets/ for the shared assets):
+// $ONTILE_DATA_DIR when set, else share/ontile beside the executable (a build tree) or in its
+// parent (an installed prefix: P/bin/ontile and P/share/ontile).
+std::filesystem::path data_dir();
 
 // The largest --size side in pixels: the render target limit (kMaxTargetSizePx).
 int max_image_side_px();

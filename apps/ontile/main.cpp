@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   add_study_command(app);
   add_sweep_command(app);
   add_diff_command(app);
+  add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -2,7 +2,6 @@
 #include "golden/golden_images.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 #include "io/image_io.h"
 #include "pipelines/kit/render_frame.h"
@@ -11,24 +10,34 @@
 
 namespace ontile {
 
-std::vector<GoldenCase> golden_cases(const std::filesystem::path& source_dir,
+std::vector<GoldenCase> golden_cases(const std::filesystem::path& demo_scene,
                                      const std::filesystem::path& shared_assets) {
+  using Options = decltype(GoldenCase::options);
   std::vector<GoldenCase> cases;
-  const std::filesystem::path demo = source_dir / "scenes" / "demo.glb";
+  const auto add = [&](std::string name, std::filesystem::path scene, std::string pipeline, int width_px,
+                       int height_px, Options options) {
+    GoldenCase c;
+    c.name = std::move(name);
+    c.scene = std::move(scene);
+    c.pipeline = std::move(pipeline);
+    c.width_px = width_px;
+    c.height_px = height_px;
+    c.options = std::move(options);
+    cases.push_back(std::move(c));
+  };
   for (const std::string& p : pipeline_names()) {
-    GoldenCase c{"demo_" + p, demo, p, 480, 270, {}};
     // The forward and deferred pipelines are shown with generated point lights.
-    if (p == "forward" || p.starts_with("deferred")) c.options = {{"lights", "16"}};
-    cases.push_back(c);
+    const bool lights = p == "forward" || p.starts_with("deferred");
+    add("demo_" + p, demo_scene, p, 480, 270, lights ? Options{{"lights", "16"}} : Options{});
   }
-  cases.push_back({"demo_deferred-subpass_unity", demo, "deferred-subpass", 480, 270, {{"gbuffer", "unity"}, {"lights", "16"}}});
-  cases.push_back({"demo_forward_msaa4", demo, "forward", 480, 270, {{"msaa", "4"}, {"lights", "16"}}});
+  add("demo_deferred-subpass_unity", demo_scene, "deferred-subpass", 480, 270, {{"gbuffer", "unity"}, {"lights", "16"}});
+  add("demo_forward_msaa4", demo_scene, "forward", 480, 270, {{"msaa", "4"}, {"lights", "16"}});
   for (const auto& [stem, relative] : {std::pair{"DamagedHelmet", "DamagedHelmet/DamagedHelmet.glb"},
                                        std::pair{"Duck", "Duck/Duck.gltf"}}) {
     for (const std::string p : {"lambert", "cartoon"}) {
       const auto names = pipeline_names();
       if (std::find(names.begin(), names.end(), p) == names.end()) continue;
-      cases.push_back({std::string(stem) + "_" + p, shared_assets / relative, p, 320, 240, {}});
+      add(std::string(stem) + "_" + p, shared_assets / relative, p, 320, 240, {});
     }
   }
   return cases;
@@ -46,6 +55,7 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
   const Scene scene = load_gltf(c.scene);
   RenderSettings settings;
   settings.pipeline = c.pipeline;
+  settings.camera_index = c.camera_index;
   settings.width_px = c.width_px;
   settings.height_px = c.height_px;
   settings.context.threads = 2;
@@ -55,7 +65,7 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
   if (color.format() != PixelFormat::RGBA8_SRGB && color.format() != PixelFormat::RGBA8_UNORM) {
     throw Error("golden case " + c.name + ": pipeline output is not 8-bit");
   }
-  const std::filesystem::path reference = golden_dir / (c.name + ".png");
+  const std::filesystem::path reference = c.reference.empty() ? golden_dir / (c.name + ".png") : c.reference;
   if (update) {
     write_png_rgba8(reference, color.width(), color.height(), color.bytes());
     result.status = GoldenResult::Status::Updated;
@@ -74,38 +84,35 @@ GoldenResult run_golden_case(const GoldenCase& c, const std::filesystem::path& g
     result.message = reference.string() + " does not exist (run `ontile golden --update`)";
     return result;
   }
-  int w = 0, h = 0;
-  const std::vector<uint8_t> expected = read_png_rgba8(reference, w, h);
-  if (w != color.width() || h != color.height()) {
+  const ImageRGBA32F expected = read_image(reference);
+  const ImageComparison comparison =
+      compare_images(image_from_rgba8(color.width(), color.height(), color.bytes()), expected, c.tolerance);
+  if (!comparison.same_size) {
     write_failure(result.actual_image, color.bytes());
     result.status = GoldenResult::Status::Mismatch;
     result.message = "size " + std::to_string(color.width()) + "x" + std::to_string(color.height()) +
-                     " differs from the golden " + std::to_string(w) + "x" + std::to_string(h);
+                     " differs from the reference's " + std::to_string(expected.width) + "x" +
+                     std::to_string(expected.height);
     return result;
   }
-  const std::vector<uint8_t>& actual = color.bytes();
-  std::vector<uint8_t> diff(actual.size(), 0);
-  for (size_t px = 0; px < actual.size(); px += 4) {
-    int worst = 0;
-    for (int ch = 0; ch < 4; ++ch) worst = std::max(worst, std::abs(int(actual[px + ch]) - int(expected[px + ch])));
-    if (worst) ++result.differing_pixels;
-    result.max_channel_difference = std::max(result.max_channel_difference, worst);
-    // Diff image: differing pixels in red, brighter for larger differences; the rest a dim
-    // grey copy of the expected image so the difference can be located.
-    const uint8_t grey = static_cast<uint8_t>((expected[px] + expected[px + 1] + expected[px + 2]) / 12);
-    diff[px] = worst ? static_cast<uint8_t>(std::min(255, 128 + worst * 8)) : grey;
-    diff[px + 1] = worst ? 0 : grey;
-    diff[px + 2] = worst ? 0 : grey;
-    diff[px + 3] = 255;
+  result.differing_pixels = comparison.pixels_over_tolerance;
+  result.max_channel_difference = comparison.max_abs_difference;
+  result.psnr_db = comparison.psnr_db;
+  const std::string figures = "max channel difference " + format_difference(comparison.max_abs_difference) +
+                              ", PSNR " + format_psnr(comparison.psnr_db) + " dB";
+  if (comparison.matches) {
+    if (comparison.differing_pixels > 0) {
+      result.message = std::to_string(comparison.differing_pixels) + " pixels differ within the tolerance (" +
+                       figures + ")";
+    }
+    return result;
   }
-  if (result.differing_pixels == 0) return result;
   result.status = GoldenResult::Status::Mismatch;
   result.diff_image = failure_dir / (c.name + ".diff.png");
-  write_failure(result.actual_image, actual);
-  write_failure(result.diff_image, diff);
-  result.message = std::to_string(result.differing_pixels) + " pixels differ (max channel difference " +
-                   std::to_string(result.max_channel_difference) + "); actual: " +
-                   result.actual_image.string() + ", diff: " + result.diff_image.string();
+  write_failure(result.actual_image, color.bytes());
+  write_failure(result.diff_image, comparison.diff_rgba);
+  result.message = std::to_string(result.differing_pixels) + " pixels differ (" + figures +
+                   "); actual: " + result.actual_image.string() + ", diff: " + result.diff_image.string();
   return result;
 }
 

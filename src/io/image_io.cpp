@@ -195,6 +195,8 @@ ImageRGBA32F read_image(const fs::path& path) {
   image.width = in->spec().width;
   image.height = in->spec().height;
   image.pixels = expand_to_rgba<float>(values, in->spec(), 1.0f);
+  const OIIO::TypeDesc stored = in->spec().format;
+  image.integer_bits = stored.is_floating_point() ? 0 : static_cast<int>(stored.size()) * 8;
   in->close();
   return image;
 }

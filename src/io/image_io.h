@@ -14,6 +14,9 @@ class StagedOutputs;
 struct ImageRGBA32F {
   int width = 0, height = 0;
   std::vector<float> pixels;  // RGBA, row-major, top row first; width * height * 4 values
+  // Bits per channel of the integer format the values came from (read_image of an 8-bit PNG:
+  // 8, the values being code / 255); 0 for a float format or values made in memory.
+  int integer_bits = 0;
 };
 
 // Format by extension (case-insensitive): ".png" writes 8-bit RGBA, ".exr" writes float32 RGBA
@@ -44,7 +47,8 @@ void write_exr_channels(const std::filesystem::path& path, int width, int height
                         const std::vector<float>& interleaved, StagedOutputs* staged = nullptr);
 
 // Reads the first subimage of any file OpenImageIO can read, as the values the file stores
-// (8-bit files give code / 255, no colour-space conversion). Channels are expanded to RGBA:
+// (8-bit files give code / 255, no colour-space conversion; integer_bits says which).
+// Channels are expanded to RGBA:
 // 1 channel -> (v, v, v, 1); 2 -> (v, v, v, a) when the second is alpha, else (r, g, 0, 1);
 // 3 -> (r, g, b, 1); more than 4 -> the first 4.
 ImageRGBA32F read_image(const std::filesystem::path& path);

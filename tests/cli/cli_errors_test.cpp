@@ -122,6 +122,13 @@ TEST_F(CliErrors, PipelinesGoldenAndTheVerbItself) {
           {"pipelines extra", "extra"},
           {"golden --dir " + out("none"), "--dir"},
           {"golden --bogus", "--bogus"},
+          {"golden --cases", "--cases"},
+          {"golden --cases " + out("none.json"), out("none.json")},
+          {"compare", "ACTUAL"},
+          {"compare " + kDemo, "EXPECTED"},
+          {"compare " + out("a.png") + " " + out("b.png"), out("a.png")},
+          {"compare " + kDemo + " " + kDemo + " --bogus", "--bogus"},
+          {"compare " + kDemo + " " + kDemo + " --max-abs x", "--max-abs"},
           {"frobnicate", "frobnicate"},
           {"", "expected one of render"},
           {"--bogus", "--bogus"},
@@ -180,7 +187,7 @@ TEST_F(CliErrors, StudyAndSweep) {
 TEST_F(CliErrors, HelpAndVersionExitZero) {
   for (const char* args : {"--help", "render --help", "gen-scene --help", "pipelines --help", "golden --help",
                            "reference --help", "accuracy --help", "study --help", "study deferred --help",
-                           "sweep --help"}) {
+                           "sweep --help", "compare --help", "diff --help"}) {
     const SplitRun r = run_cli_split(args, scratch_);
     EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.err;
     EXPECT_NE(r.out.find("--help"), std::string::npos) << args;

@@ -11,7 +11,7 @@ namespace ontile {
 namespace {
 
 TEST(GoldenImages, EveryCaseMatchesBitForBit) {
-  const auto cases = golden_cases(ONTILE_SOURCE_DIR, ONTILE_SHARED_ASSETS);
+  const auto cases = golden_cases(std::filesystem::path(ONTILE_SOURCE_DIR) / "scenes" / "demo.glb", ONTILE_SHARED_ASSETS);
   ASSERT_GE(cases.size(), 1u);
   int compared = 0;
   for (const GoldenCase& c : cases) {
@@ -30,7 +30,12 @@ TEST(GoldenImages, EveryCaseMatchesBitForBit) {
 TEST(GoldenImages, AMismatchWritesActualAndDiffImages) {
   const auto dir = std::filesystem::temp_directory_path() / ("ontile_golden_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir / "ref");
-  const GoldenCase c{"demo_lambert", std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb", "lambert", 64, 36};
+  GoldenCase c;
+  c.name = "demo_lambert";
+  c.scene = std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb";
+  c.pipeline = "lambert";
+  c.width_px = 64;
+  c.height_px = 36;
   ASSERT_EQ(run_golden_case(c, dir / "ref", dir / "fail", true).status, GoldenResult::Status::Updated);
   EXPECT_EQ(run_golden_case(c, dir / "ref", dir / "fail", false).status, GoldenResult::Status::Match);
   // Change one channel of one pixel of the reference by 3.

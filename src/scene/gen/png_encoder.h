@@ -1,5 +1,7 @@
-// Self-contained, byte-deterministic PNG encoder for the generated textures (8-bit RGB). Written
-// here rather than taken from a library so the bytes cannot change with a library version.
+// PNG encoding of the generated textures (8-bit RGB) with stb_image_write from Debian's libstb,
+// the library tinygltf already decodes images with. Its encoder (per-row filter chosen by the
+// smallest sum of absolute residuals, its own deflate, no time or text chunks) depends on nothing
+// but the pixels, so `gen-scene` writes the same bytes on every run with a given libstb.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -8,9 +10,8 @@
 
 namespace ontile::gen {
 
-// PNG (RFC 2083) with one IDAT holding a zlib stream (RFC 1950) of fixed-Huffman deflate blocks
-// (RFC 1951 3.2.6) over greedy LZ77 matches; each row uses the filter with the smallest sum of
-// absolute residuals (the heuristic the PNG spec suggests, 12.8).
+// The image as a complete PNG file (8-bit truecolour, no interlace). Throws Error for an image
+// whose byte count does not match its size.
 std::vector<uint8_t> encode_png(const RgbImage& image);
 
 }  // namespace ontile::gen
