@@ -1,7 +1,7 @@
 // Tests for the texture-traffic model: exact hits/misses of the set-associative LRU cache,
 // config validation, the texel addresses Texture2D reports while sampling, and an end-to-end
 // textured full-screen quad whose texture traffic is known exactly at any thread count.
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Parameter-buffer read cache model (see parameter_cache.h).
-#include "tiler/detail/parameter_cache.h"
+// The parameter buffer's reads in tile order (see parameter_reads.h).
+#include "tiler/detail/parameter_reads.h"
 
 #include <vector>
 
@@ -12,9 +12,7 @@ uint64_t align_up(uint64_t bytes) { return (bytes + kLineBytes - 1) / kLineBytes
 
 }  // namespace
 
-TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const RenderPassDesc& pass,
-                                      const ParameterCacheConfig& config) {
-  TextureCache cache(TextureCacheConfig{config.size_bytes, static_cast<uint32_t>(kLineBytes), config.ways});
+void replay_parameter_reads(const ParameterBuffer& params, const RenderPassDesc& pass, MemoryModel& memory) {
   // Where each draw's post-transform vertices and each chunk's clipped vertices start, after
   // the tile lists and primitive records.
   uint64_t triangle_total = 0;
@@ -41,17 +39,7 @@ TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const Rende
     next = align_up(next + uint64_t{params.chunks[c].clipped_vertices} * post_transform_vertex_bytes(n));
   }
 
-  TextureTraffic traffic;
-  auto read = [&](uint64_t address, uint64_t bytes) {
-    for (uint64_t g = address / kLineBytes; g <= (address + bytes - 1) / kLineBytes; ++g) {
-      ++traffic.accesses;
-      if (cache.access(g)) {
-        ++traffic.hits;
-      } else {
-        ++traffic.misses;
-      }
-    }
-  };
+  const auto read = [&](uint64_t address, uint64_t bytes) { memory.parameter_read(address, bytes); };
   const int tiles = params.grid.tile_count();
   for (int tile = 0; tile < tiles; ++tile) {
     for (uint32_t e = params.tile_offsets[tile]; e < params.tile_offsets[tile + 1]; ++e) {
@@ -67,8 +55,6 @@ TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const Rende
       }
     }
   }
-  traffic.bytes_read = traffic.misses * kLineBytes;
-  return traffic;
 }
 
 }  // namespace ontile
