@@ -50,11 +50,13 @@ TileSize panfrost_tile_size(const TileMemoryUse& use, uint32_t tile_buffer_bytes
 }
 
 TileSize asahi_tile_size(const TileMemoryUse& use) {
+  // agx_build_tilebuffer_layout places the targets in descending order of alignment (their size),
+  // each naturally aligned, so no padding is left between them.
+  std::vector<uint32_t> sizes;
+  for (const PixelFormat f : use.colors) sizes.push_back(static_cast<uint32_t>(bytes_per_pixel(f)));
+  std::stable_sort(sizes.begin(), sizes.end(), [](uint32_t a, uint32_t b) { return a > b; });
   uint32_t offset = 0;
-  for (const PixelFormat f : use.colors) {
-    const auto size = static_cast<uint32_t>(bytes_per_pixel(f));
-    offset = (offset + size - 1) / size * size + size;  // natural alignment, then the target
-  }
+  for (const uint32_t size : sizes) offset = (offset + size - 1) / size * size + size;
   const uint32_t sample_bytes = (offset + 7) / 8 * 8;
   const uint32_t bytes_per_px = sample_bytes * static_cast<uint32_t>(use.samples);
   for (const TileSize size : {TileSize{32, 32}, TileSize{32, 16}, TileSize{16, 16}}) {

@@ -57,10 +57,11 @@ TEST(TileSizeRules, AsahiShrinksFrom32x32To32x16To16x16) {
       {"one RGBA8", {{F::RGBA8_SRGB}, F::D32_FLOAT, 1}, {32, 32}},
       // 4 x 4 B = 16 B: 16384: 32x32.
       {"four 32-bit targets", {{F::RGBA8_SRGB, F::RGBA8_UNORM, F::RGB10A2_UNORM, F::R32_FLOAT}, F::D32_FLOAT, 1}, {32, 32}},
-      // 8 + 16 = 24 B: 24576: 32x32.
+      // Sorted by size, 16 + 8 = 24 B (in the given order RGBA16F would pad 8 B before RGBA32F):
+      // 24576: 32x32.
       {"RGBA16F + RGBA32F", {{F::RGBA16_FLOAT, F::RGBA32_FLOAT}, std::nullopt, 1}, {32, 32}},
-      // 4 + pad to 16 + 16 = 32 B: 32768 > 32767; x 512 = 16384: 32x16.
-      {"RGBA8 then RGBA32F (alignment pads)", {{F::RGBA8_UNORM, F::RGBA32_FLOAT}, std::nullopt, 1}, {32, 16}},
+      // 16 + 8 + 4 = 28, rounded to 32 B: 32768 > 32767; x 512 = 16384: 32x16.
+      {"RGBA8 + RGBA16F + RGBA32F", {{F::RGBA8_UNORM, F::RGBA16_FLOAT, F::RGBA32_FLOAT}, std::nullopt, 1}, {32, 16}},
       // 8 B x 4 samples = 32 B: 32x16.
       {"4x MSAA RGBA8", {{F::RGBA8_SRGB}, F::D32_FLOAT, 4}, {32, 16}},
       // 16 B x 4 samples = 64 B: 64 x 512 = 32768 > 32767; x 256 = 16384: 16x16.
