@@ -41,11 +41,10 @@ struct TileMemoryUse {
 TileSize panfrost_tile_size(const TileMemoryUse& use, uint32_t tile_buffer_bytes, bool pipelining_required);
 int panfrost_tib_bytes_per_sample(PixelFormat format);
 
-// asahi (src/asahi/lib/agx_tilebuffer.c, agx_build_tilebuffer_layout and agx_select_tile_size):
-// the colour targets of a sample, in descending order of size, each at its natural alignment,
-// rounded up to 8 bytes, times the sample count, must fit 32 KiB - 1 per tile: 32x32, else
-// 32x16, else 16x16. Throws ontile::Error past 16x16 (asahi spills
-// render targets to memory there; ontile does not model it).
+// asahi (src/asahi/lib/agx_tilebuffer.c, agx_build_tilebuffer_layout, agx_select_tile_size): a
+// sample's colour targets by descending size, each naturally aligned, rounded up to 8 bytes, x
+// samples, must fit 32 KiB - 1 per tile: 32x32, else 32x16, else 16x16. Throws ontile::Error past
+// 16x16 (asahi spills render targets to memory there; ontile does not model it).
 TileSize asahi_tile_size(const TileMemoryUse& use);
 constexpr uint32_t kAsahiMaxBytesPerTile = 32768 - 1;  // MAX_BYTES_PER_TILE on G13
 

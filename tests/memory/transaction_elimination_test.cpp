@@ -44,7 +44,7 @@ Frame render_square(const std::shared_ptr<TileSignatureHistory>& history, int x,
                        vs, fs, idx);
   Frame f;
   f.report = ctx.submit();
-  f.pixels.assign(s->bytes(), s->bytes() + static_cast<size_t>(kW) * kH * 4);
+  f.pixels = s->bytes();
   return f;
 }
 
