@@ -7,6 +7,7 @@ namespace ontile {
 
 SetAssociativeCache::SetAssociativeCache(uint32_t sets, uint32_t ways, int line_shift) {
   tags_.assign(static_cast<size_t>(sets) * ways, kEmpty);
+  state_.assign(tags_.size(), 0);  // flush() reads and clears it, also before any access
   sets_.tags = tags_.data();
   sets_.sets = sets;
   sets_.ways = ways;
@@ -17,7 +18,6 @@ SetAssociativeCache::SetAssociativeCache(uint32_t sets, uint32_t ways, int line_
 // The same move-to-front pass as SetArray::access_line, carrying each way's state with its tag.
 bool SetAssociativeCache::access_line_write_back(uint64_t line, uint32_t owner, bool write,
                                                  WriteBack& evicted) {
-  if (state_.size() != tags_.size()) state_.assign(tags_.size(), 0);
   evicted = WriteBack{};
   const size_t set = sets_.index_of_line(line);
   uint64_t* tag = tags_.data() + set;
