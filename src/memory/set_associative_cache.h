@@ -88,7 +88,7 @@ class SetAssociativeCache {
  private:
   static constexpr uint32_t kDirty = 1;  // state = owner << 1 | dirty
   std::vector<uint64_t> tags_;
-  std::vector<uint32_t> state_;  // allocated on the first write-back access
+  std::vector<uint32_t> state_;  // one per way, beside tags_
   SetArray sets_;
 };
 
