@@ -143,6 +143,8 @@ void apply_imr_model(const RenderPassDesc& pass, const TilerConfig& config,
   const ImrTraffic imr = simulate_imr_pass(pass, traces, config.render_target_cache);
   report.architecture = "imr";
   report.geometry.parameter_bytes_written = 0;
+  report.geometry.parameter_position_bytes_written = 0;
+  report.geometry.parameter_varying_bytes_written = 0;
   report.tiles.parameter_bytes_read = 0;
   report.render_target_cache_hits = imr.cache_hits;
   report.render_target_cache_misses = imr.cache_misses;
@@ -239,7 +241,9 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   report.tiles_total = static_cast<uint64_t>(grid.tile_count());
 
   const auto bin_start = std::chrono::steady_clock::now();
-  const ParameterBuffer params = bin_triangles(pass, grid);
+  const VertexOutputModel vertex_output{
+      config.idvs, config.varying_precision == VaryingPrecision::Fp16 ? 2u : 4u};
+  const ParameterBuffer params = bin_triangles(pass, grid, vertex_output);
   report.binning_ms = ms_since(bin_start);
   report.geometry = params.counters;
 

@@ -11,6 +11,7 @@
 namespace ontile {
 
 enum class Architecture { Tbdr, Imr };
+enum class VaryingPrecision { Fp32, Fp16 };
 
 struct TilerConfig {
   Architecture architecture = Architecture::Tbdr;
@@ -29,6 +30,12 @@ struct TilerConfig {
   // Arm Frame Buffer Compression (memory/afbc.h): single-sample colour attachments of up to 32
   // bits per pixel are loaded, stored and resolved at their compressed size. TBDR only.
   bool afbc = false;
+  // Index-driven vertex shading (Mali Bifrost/Valhall): the parameter buffer holds varyings only
+  // for vertices of triangles that survive culling; positions for every vertex. TBDR only.
+  bool idvs = false;
+  // Bytes per stored varying component: fp32 (4, as before) or fp16 (2). Prices storage only:
+  // varyings are still interpolated in fp32, so images do not change.
+  VaryingPrecision varying_precision = VaryingPrecision::Fp32;
 };
 
 // Runs on the calling thread's oneTBB arena (callers pick the thread count with a

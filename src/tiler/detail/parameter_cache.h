@@ -17,7 +17,7 @@ struct ParameterCacheConfig {
 
 // The parameter buffer's simulated layout: the tile lists (4-byte entries, CSR order) from
 // address 0, then the primitive records (12 bytes per set-up triangle, in chunk order), then
-// each draw's post-transform vertices (16 + 4 per varying bytes each, by vertex index: the
+// each draw's post-transform vertices (16 + 4 per varying bytes each, 2 with fp16 varyings, by vertex index: the
 // vertices binning wrote, shared by the triangles that index them), then the vertices clipping
 // created, chunk by chunk; every region 64-byte aligned. Returns the lookups of the 64-byte granules each tile reads; bytes_read =
 // misses x 64. Throws ontile::Error for an invalid cache geometry.
