@@ -23,7 +23,8 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
-              render_graph = "off", afbc = "off";
+              render_graph = "off", afbc = "off", idvs = "off", varying_precision = "fp32",
+              texture_compression = "none";
   bool allow_outside_files = false, progress = false, tiles = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
@@ -83,14 +84,14 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
 }
 
 RenderRun run_of(const RenderOptions& o, const RenderSettings& settings) {
-  return {o.scene, settings, o.aov, o.frames, o.tiles};
+  return {o.scene, settings, o.aov, o.frames, o.tiles, *parse_texture_compression(o.texture_compression)};
 }
 
 // --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
 // --set msaa=N, each pixel's sample 0: aov_pass.h).
 void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
   const AovKind kind = *parse_aov_kind(o.aov);
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   const AovFrame frame =
       render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_aov_frame(scene, settings, {kind}); });
@@ -169,6 +170,9 @@ RenderSettings checked_settings(const RenderOptions& o) {
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
   settings.context.tiler.afbc = o.afbc == "on";
+  settings.context.tiler.idvs = o.idvs == "on";
+  settings.context.tiler.varying_precision =
+      o.varying_precision == "fp16" ? VaryingPrecision::Fp16 : VaryingPrecision::Fp32;
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".png" && ext != ".exr") {
     throw UsageError("--out " + o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
@@ -196,7 +200,7 @@ void run_render(const RenderOptions& o) {
     run_aov_render(o, settings, outputs);
     return;
   }
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   // --html and --dump-attachments capture every pass of the first (warm-up) frame: frames are
   // bit-identical, and the timed frames then pay nothing for the copies.
@@ -251,7 +255,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr; "
                                    "with --set msaa=N, each pixel's sample 0)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
-  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
+  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large, bjorge (= --set gbuffer=NAME)");
   cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");
   cmd->add_option("--frames", o->frames,
                   "Render N more frames after one warm-up and print their median and minimum time (ms); "
@@ -281,6 +285,18 @@ void add_render_command(CLI::App& app) {
                   "Arm Frame Buffer Compression: on prices single-sample colour attachments of up to 32 bits "
                   "per pixel at their compressed size (TBDR only; docs/memory-model.md); default off")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--idvs", o->idvs,
+                  "Index-driven vertex shading: on writes varyings to the parameter buffer only for vertices of "
+                  "triangles that survive culling, positions for all (TBDR only); default off")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--varying-precision", o->varying_precision,
+                  "Stored varying size: fp32 (4 bytes per component, default) or fp16 (2); interpolation "
+                  "stays fp32, so images do not change")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option("--texture-compression", o->texture_compression,
+                  "Storage of the scene's textures for the texture cache: none (default), astc4x4 (1 byte per "
+                  "texel), astc8x8 (0.25), etc2 (0.5, or 1 with alpha); sampling still reads the decoded texels")
+      ->check(CLI::IsMember({"none", "astc4x4", "astc8x8", "etc2"}));
   cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
   cmd->callback([o] { run_render(*o); });
