@@ -46,7 +46,7 @@ const PassReport& pass_named(const FrameReport& report, const std::string& name)
 
 TEST(DeferredPipelines, ClassicAndSubpassImagesAreBitIdentical) {
   const Scene scene = load_gltf(kDemo);
-  for (const std::string preset : {"vulkan-samples", "unity", "vulkan-samples-large"}) {
+  for (const std::string preset : {"vulkan-samples", "unity", "vulkan-samples-large", "bjorge"}) {
     for (const std::string lights : {"0", "1", "64"}) {
       const RenderedFrame classic = render(scene, "deferred-classic", 200, 112, {{"gbuffer", preset}, {"lights", lights}});
       const RenderedFrame subpass = render(scene, "deferred-subpass", 200, 112, {{"gbuffer", preset}, {"lights", lights}});

@@ -11,7 +11,7 @@ namespace ontile::test {
 namespace {
 
 constexpr int kW = 100, kH = 60;
-constexpr int kVaryings = 3;
+constexpr int kVaryings = 4;  // VaryingsShader writes varyings 0-3
 
 struct Drawn {
   PassReport pass;
