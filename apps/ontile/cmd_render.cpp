@@ -24,7 +24,8 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
-              render_graph = "off", afbc = "off", transaction_elimination = "off", gpu;
+              render_graph = "off", afbc = "off", transaction_elimination = "off", gpu, idvs = "off",
+              varying_precision = "fp32", texture_compression = "none";
   double camera_pan_deg = 0.0;  // --camera-pan: degrees the camera turns per frame
   bool allow_outside_files = false, progress = false, tiles = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
@@ -40,7 +41,7 @@ struct RenderOptions {
 
 // The options a --gpu preset sets, which an explicit one overrides.
 const std::vector<std::string> kPresetOptions = {"--tile", "--budget", "--afbc", "--transaction-elimination",
-                                                 "--texture-cache-kib", "--parameter-cache-kib"};
+                                                 "--idvs", "--texture-cache-kib", "--parameter-cache-kib"};
 
 // Renders once (the warm-up when timing), then `frames` more times with each frame timed by the
 // wall clock of the whole render call; returns the last frame. Progress counts the timed frames.
@@ -93,14 +94,14 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
 }
 
 RenderRun run_of(const RenderOptions& o, const RenderSettings& settings) {
-  return {o.scene, settings, o.aov, o.frames, o.tiles, o.gpu};
+  return {o.scene, settings, o.aov, o.frames, o.tiles, o.gpu, *parse_texture_compression(o.texture_compression)};
 }
 
 // --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
 // --set msaa=N, each pixel's sample 0: aov_pass.h).
 void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
   const AovKind kind = *parse_aov_kind(o.aov);
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   const AovFrame frame =
       render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_aov_frame(scene, settings, {kind}); });
@@ -158,6 +159,7 @@ void apply_gpu_option(const RenderOptions& o, TilerConfig& tiler) {
     if (o.was_given("--budget")) tiler.color_budget_bits_per_px = given.color_budget_bits_per_px;
     if (o.was_given("--afbc")) tiler.afbc = given.afbc;
     if (o.was_given("--transaction-elimination")) tiler.transaction_elimination = given.transaction_elimination;
+    if (o.was_given("--idvs")) tiler.idvs = given.idvs;
     if (o.was_given("--texture-cache-kib")) tiler.texture_cache = given.texture_cache;
     if (o.was_given("--parameter-cache-kib")) tiler.parameter_cache = given.parameter_cache;
   }
@@ -207,6 +209,9 @@ RenderSettings checked_settings(const RenderOptions& o) {
   if (o.transaction_elimination == "on") {
     settings.context.tiler.transaction_elimination = std::make_shared<TileSignatureHistory>();
   }
+  settings.context.tiler.idvs = o.idvs == "on";
+  settings.context.tiler.varying_precision =
+      o.varying_precision == "fp16" ? VaryingPrecision::Fp16 : VaryingPrecision::Fp32;
   apply_gpu_option(o, settings.context.tiler);
   settings.camera_pan_deg_per_frame = o.camera_pan_deg;
   const std::string ext = std::filesystem::path(o.out).extension().string();
@@ -236,7 +241,7 @@ void run_render(const RenderOptions& o) {
     run_aov_render(o, settings, outputs);
     return;
   }
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   // --html and --dump-attachments capture every pass of the first (warm-up) frame: frames are
   // bit-identical, and the timed frames then pay nothing for the copies.
@@ -265,9 +270,6 @@ void run_render(const RenderOptions& o) {
   if (settings.context.tiler.transaction_elimination && !o.frames) {
     std::fprintf(summary, "note: transaction elimination compares each frame with the previous one; with one frame it "
                           "eliminates nothing (render more with --frames N)\n");
-  }
-  if (!o.gpu.empty() && find_gpu_preset(o.gpu)->index_driven_vertex_shading) {
-    std::fprintf(summary, "note: %s shades vertices index-driven (IDVS); ontile does not model it yet\n", o.gpu.c_str());
   }
   std::fprintf(summary, "wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
   if (!o.inspect.html.empty()) std::fprintf(summary, "wrote %s\n", o.inspect.html.c_str());
@@ -300,7 +302,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr; "
                                    "with --set msaa=N, each pixel's sample 0)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
-  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
+  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large, bjorge (= --set gbuffer=NAME)");
   cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");
   cmd->add_option("--frames", o->frames,
                   "Render N more frames after one warm-up and print their median and minimum time (ms); "
@@ -335,14 +337,26 @@ void add_render_command(CLI::App& app) {
                   "--frames N to have a previous frame; TBDR only; docs/memory-model.md); default off")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--gpu", o->gpu,
-                  "GPU preset: mali-g76, mali-g71 (16x16, 128 bpp, AFBC, transaction elimination, 512 KiB L2), "
+                  "GPU preset: mali-g76, mali-g71 (16x16, 128 bpp, AFBC, transaction elimination, IDVS, 512 KiB L2), "
                   "panfrost, apple-g13, adreno-630 (those drivers' tile-size rules); explicit --tile, --budget, "
-                  "--afbc, --transaction-elimination and cache sizes override it (docs/fidelity.md)")
+                  "--afbc, --transaction-elimination, --idvs and cache sizes override it (docs/fidelity.md)")
       ->check(CLI::IsMember(gpu_preset_list()));
   cmd->add_option("--camera-pan", o->camera_pan_deg,
                   "Turn the camera this many degrees about the vertical axis per frame (with --frames: a moving "
                   "camera, which defeats transaction elimination); default 0")
       ->check(CLI::Range(-180.0, 180.0));
+  cmd->add_option("--idvs", o->idvs,
+                  "Index-driven vertex shading: on writes varyings to the parameter buffer only for vertices of "
+                  "triangles that survive culling, positions for all (TBDR only); default off")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--varying-precision", o->varying_precision,
+                  "Stored varying size: fp32 (4 bytes per component, default) or fp16 (2); interpolation "
+                  "stays fp32, so images do not change")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option("--texture-compression", o->texture_compression,
+                  "Storage of the scene's textures for the texture cache: none (default), astc4x4 (1 byte per "
+                  "texel), astc8x8 (0.25), etc2 (0.5, or 1 with alpha); sampling still reads the decoded texels")
+      ->check(CLI::IsMember({"none", "astc4x4", "astc8x8", "etc2"}));
   cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
   cmd->callback([o, cmd] {

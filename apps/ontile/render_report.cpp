@@ -30,6 +30,9 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
       {"transaction_elimination", tiler.transaction_elimination != nullptr},
       {"gpu", run.gpu.empty() ? nlohmann::json() : nlohmann::json(run.gpu)},
       {"camera_pan_deg_per_frame", s.camera_pan_deg_per_frame},
+      {"idvs", tiler.idvs},
+      {"varying_precision", tiler.varying_precision == VaryingPrecision::Fp16 ? "fp16" : "fp32"},
+      {"texture_compression", texture_compression_name(run.texture_compression)},
       {"aov", run.aov.empty() ? nlohmann::json() : nlohmann::json(run.aov)},
       {"frames", run.frames ? nlohmann::json(*run.frames) : nlohmann::json()},
       {"tiles", run.tiles}};

@@ -114,6 +114,8 @@ nlohmann::json pass_json(const PassReport& p) {
           {"bytes_read", p.bytes_read()},
           {"bytes_written", p.bytes_written()},
           {"parameter_buffer", {{"bytes_written", p.geometry.parameter_bytes_written},
+                                {"position_bytes_written", p.geometry.parameter_position_bytes_written},
+                                {"varying_bytes_written", p.geometry.parameter_varying_bytes_written},
                                 {"bytes_read", p.tiles.parameter_bytes_read},
                                 {"cache", {{"accesses", p.parameter_cache.accesses},
                                            {"hits", p.parameter_cache.hits},

@@ -13,7 +13,7 @@ class ImrMemory final : public MemoryModel {
   void tile_loaded(int, const TileRect&) override {}
   void tile_stored(int, const TileRect&) override {}
   void fragments(const std::vector<TileTrace>& traces) override;
-  uint64_t parameter_buffer_written(uint64_t) override { return 0; }
+  ParameterBufferWrites parameter_buffer_written(const ParameterBufferWrites&) override { return {}; }
   bool replays_parameter_reads() const override { return false; }
   void parameter_read(uint64_t, uint64_t) override {}
   uint64_t parameter_buffer_read(uint64_t, TextureTraffic& cache) override {

@@ -20,6 +20,14 @@ struct ParameterCacheConfig {
   uint32_t ways = 16;       // 64-byte lines
 };
 
+// What binning wrote to the parameter buffer: `bytes` in all, of which the post-transform
+// vertices' positions and varyings (the rest are primitive records and tile-list entries).
+struct ParameterBufferWrites {
+  uint64_t bytes = 0;
+  uint64_t position_bytes = 0;
+  uint64_t varying_bytes = 0;
+};
+
 struct MemoryConfig {
   bool immediate_mode = false;  // the IMR model (imr_model.h) instead of tile memory
   TextureCacheConfig texture_cache;
@@ -50,8 +58,8 @@ class MemoryModel {
   virtual void tile_stored(int tile, const TileRect& rect) = 0;
   // The fragments the tiles recorded (records_fragments()), tiles in index order.
   virtual void fragments(const std::vector<TileTrace>& traces) = 0;
-  // Binning wrote `bytes` of parameter buffer; returns the bytes charged.
-  virtual uint64_t parameter_buffer_written(uint64_t bytes) = 0;
+  // Binning wrote `written` to the parameter buffer; returns the bytes charged.
+  virtual ParameterBufferWrites parameter_buffer_written(const ParameterBufferWrites& written) = 0;
   // Whether the parameter-buffer reads are replayed read by read (a cache in front of them):
   // then parameter_read is called for every read, tiles in index order.
   virtual bool replays_parameter_reads() const = 0;

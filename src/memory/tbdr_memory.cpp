@@ -107,7 +107,9 @@ void TbdrMemory::tile_stored(int tile, const TileRect& rect) {
 
 void TbdrMemory::fragments(const std::vector<TileTrace>&) {}
 
-uint64_t TbdrMemory::parameter_buffer_written(uint64_t bytes) { return bytes; }
+ParameterBufferWrites TbdrMemory::parameter_buffer_written(const ParameterBufferWrites& written) {
+  return written;
+}
 
 bool TbdrMemory::replays_parameter_reads() const { return parameter_cache_ != nullptr; }
 

@@ -20,7 +20,7 @@ class TbdrMemory final : public MemoryModel {
   void tile_loaded(int tile, const TileRect& rect) override;
   void tile_stored(int tile, const TileRect& rect) override;
   void fragments(const std::vector<TileTrace>& traces) override;
-  uint64_t parameter_buffer_written(uint64_t bytes) override;
+  ParameterBufferWrites parameter_buffer_written(const ParameterBufferWrites& written) override;
   bool replays_parameter_reads() const override;
   void parameter_read(uint64_t address, uint64_t bytes) override;
   uint64_t parameter_buffer_read(uint64_t uncached, TextureTraffic& cache) override;

@@ -89,6 +89,7 @@ void apply_gpu_preset(const GpuPreset& preset, TilerConfig& config) {
   config.afbc = preset.afbc;
   config.transaction_elimination =
       preset.transaction_elimination ? std::make_shared<TileSignatureHistory>() : nullptr;
+  config.idvs = preset.index_driven_vertex_shading;
   if (preset.l2_bytes > 0) {
     config.texture_cache.size_bytes = preset.l2_bytes;
     config.parameter_cache.size_bytes = preset.l2_bytes;

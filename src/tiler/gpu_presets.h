@@ -20,10 +20,11 @@ struct GpuPreset {
   FreedrenoGmem gmem;                    // Freedreno rule
   bool afbc = false;
   bool transaction_elimination = false;
-  // Index-driven vertex shading (positions for every vertex, varyings only for the vertices of
-  // triangles that survive culling): Mali Bifrost and later do it. The IDVS model is another
-  // helper's work (`--idvs on`, branch wip-idvs); apply_gpu_preset leaves it alone until it is
-  // merged, and `ontile render --gpu` says so.
+  // Index-driven vertex shading (TilerConfig::idvs: positions for every vertex, varyings only for
+  // the vertices of triangles that survive culling): Mali Bifrost and later do it. Varying
+  // precision and texture compression are not preset: they are the application's choices (its
+  // shaders' mediump varyings, its assets' texture formats), given with --varying-precision and
+  // --texture-compression.
   bool index_driven_vertex_shading = false;
   uint32_t l2_bytes = 0;  // 0: ontile's default caches; else the texture and parameter caches
 };

@@ -25,6 +25,10 @@ struct GeometryCounters {
   uint64_t index_bytes_read = 0;
   uint64_t vertex_bytes_read = 0;      // unique vertices fetched per draw
   uint64_t parameter_bytes_written = 0;
+  // Of parameter_bytes_written, the post-transform vertices' positions and varyings (the rest
+  // are primitive records and tile-list entries).
+  uint64_t parameter_position_bytes_written = 0;
+  uint64_t parameter_varying_bytes_written = 0;
 
   void add(const GeometryCounters& o);
 };

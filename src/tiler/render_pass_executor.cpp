@@ -293,10 +293,17 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   report.tiles_total = static_cast<uint64_t>(grid.tile_count());
 
   const auto bin_start = std::chrono::steady_clock::now();
-  const ParameterBuffer params = bin_triangles(pass, grid);
+  const VertexOutputModel vertex_output{
+      config.idvs, config.varying_precision == VaryingPrecision::Fp16 ? 2u : 4u};
+  const ParameterBuffer params = bin_triangles(pass, grid, vertex_output);
   report.binning_ms = ms_since(bin_start);
   report.geometry = params.counters;
-  report.geometry.parameter_bytes_written = external.parameter_buffer_written(params.counters.parameter_bytes_written);
+  const ParameterBufferWrites charged = external.parameter_buffer_written(
+      {params.counters.parameter_bytes_written, params.counters.parameter_position_bytes_written,
+       params.counters.parameter_varying_bytes_written});
+  report.geometry.parameter_bytes_written = charged.bytes;
+  report.geometry.parameter_position_bytes_written = charged.position_bytes;
+  report.geometry.parameter_varying_bytes_written = charged.varying_bytes;
 
   external.begin_pass(describe_pass_memory(pass, grid.tile_width_px, grid.tile_height_px));
   const auto tiles_start = std::chrono::steady_clock::now();

@@ -12,6 +12,7 @@
 namespace ontile {
 
 enum class Architecture { Tbdr, Imr };
+enum class VaryingPrecision { Fp32, Fp16 };
 
 struct TilerConfig {
   Architecture architecture = Architecture::Tbdr;
@@ -40,6 +41,12 @@ struct TilerConfig {
   // rendered with this config share (a tile write equal to the previous frame's is skipped);
   // null: off. Needs 16x16 tiles (the CLI refuses other sizes). TBDR only.
   std::shared_ptr<TileSignatureHistory> transaction_elimination;
+  // Index-driven vertex shading (Mali Bifrost/Valhall): the parameter buffer holds varyings only
+  // for vertices of triangles that survive culling; positions for every vertex. TBDR only.
+  bool idvs = false;
+  // Bytes per stored varying component: fp32 (4, as before) or fp16 (2). Prices storage only:
+  // varyings are still interpolated in fp32, so images do not change.
+  VaryingPrecision varying_precision = VaryingPrecision::Fp32;
 };
 
 // The memory model's configuration out of the tiler's.

@@ -46,6 +46,9 @@ TEST(GpuPresetCli, MaliG76RendersAndReportsWhatItSet) {
   EXPECT_EQ(j["run"]["gpu"], "mali-g76");
   EXPECT_EQ(j["run"]["afbc"], true);
   EXPECT_EQ(j["run"]["transaction_elimination"], true);
+  EXPECT_EQ(j["run"]["idvs"], true);
+  EXPECT_EQ(j["run"]["varying_precision"], "fp32") << "the application's choice, not the preset's";
+  EXPECT_EQ(j["run"]["texture_compression"], "none") << "the assets' choice, not the preset's";
   EXPECT_EQ(j["run"]["parameter_cache_bytes"], 512 * 1024);
   EXPECT_EQ(j["run"]["texture_cache_bytes"], 512 * 1024);
   // A static camera: the second frame writes no colour tile the first wrote.
@@ -67,10 +70,11 @@ TEST(GpuPresetCli, APanningCameraEliminatesFewerTiles) {
 
 TEST(GpuPresetCli, ExplicitOptionsOverrideThePreset) {
   const fs::path out = temp_folder() / "override.png", report = temp_folder() / "override.json";
-  const CliRun r = run_cli("render --scene " + kDemo + " --size 96x64 --gpu mali-g76 --afbc off --out " + out.string() +
-                           " --report " + report.string());
+  const CliRun r = run_cli("render --scene " + kDemo + " --size 96x64 --gpu mali-g76 --afbc off --idvs off --out " +
+                           out.string() + " --report " + report.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(read_json(report)["run"]["afbc"], false);
+  EXPECT_EQ(read_json(report)["run"]["idvs"], false);
 }
 
 TEST(GpuPresetCli, OtherRulesRender) {

@@ -344,8 +344,9 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     const SubpassDesc& subpass = pass.subpasses[tri.subpass];
     const DrawCall& draw = subpass.draws[tri.draw];
     const int n = draw.vertex_shader->varying_count();
-    counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
-                                     3u * post_transform_vertex_bytes(n);
+    counters.parameter_bytes_read +=
+        kTileListEntryBytes + kPrimitiveRecordBytes +
+        3u * post_transform_vertex_bytes(n, params.vertex_output.varying_component_bytes);
     TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
                               rect, &scratch.fetches[tri.subpass], ref,
                               record_fragment_accesses ? &trace.fragments : nullptr);
