@@ -44,8 +44,9 @@ ontile_layer(io FOLDERS io PUBLIC_DEPS ontile_raster PRIVATE_DEPS OpenImageIO::O
 ontile_layer(scene FOLDERS scene PUBLIC_DEPS ontile_raster
   PRIVATE_DEPS TinyGLTF::TinyGLTF ontile::stb)
 ontile_layer(shaders FOLDERS shaders_cpp PUBLIC_DEPS ontile_scene ontile_io PRIVATE_DEPS hwy::hwy)
-# Memory models that price what the tiler moves (src/memory/: framebuffer compression).
-ontile_layer(memory FOLDERS memory PUBLIC_DEPS ontile_raster)
+# The external-memory models that price what the tiler moves (src/memory/: the MemoryModel seam,
+# TBDR and IMR models, the shared set-associative cache, AFBC, transaction elimination).
+ontile_layer(memory FOLDERS memory PUBLIC_DEPS ontile_raster PRIVATE_DEPS hwy::hwy ZLIB::ZLIB)
 ontile_layer(tiler FOLDERS tiler PUBLIC_DEPS ontile_raster ontile_memory PRIVATE_DEPS hwy::hwy)
 # The context executes frames on the tiler and owns the built-in full-screen functors (blits,
 # clears, the sky), but its headers show neither the shader library nor Highway to pipelines.

@@ -4,10 +4,11 @@
 set -euo pipefail
 packages=(build-essential cmake libglm-dev libembree-dev libopenimageio-dev libtbb-dev
           libtinygltf-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev
-          libstb-dev openimageio-tools libhwy-dev
+          libstb-dev openimageio-tools libhwy-dev zlib1g-dev
           libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
           python3 python3-jsonschema chromium
           pybind11-dev python3-dev python3-numpy python3-distributed)
+# zlib1g-dev: crc32 for transaction elimination (OpenImageIO pulls it in too).
 # openimageio-tools: Debian's OpenImageIO CMake config references its command-line tools.
 # libegl-dev, libgles-dev, libegl-mesa0, libgl1-mesa-dri: EGL/GLES headers and Mesa's llvmpipe
 # for the peer benchmark (bench/llvmpipe/, scripts/peer_bench.sh).

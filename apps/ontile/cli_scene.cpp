@@ -12,9 +12,10 @@ void add_scene_options(CLI::App* cmd, std::string& scene, bool& allow_outside_fi
                 "paths, '..'); refused by default");
 }
 
-Scene load_scene(const std::string& scene, bool allow_outside_files) {
+Scene load_scene(const std::string& scene, bool allow_outside_files, TextureCompression texture_compression) {
   GltfLoadOptions options;
   options.allow_uris_outside_scene_folder = allow_outside_files;
+  options.texture_compression = texture_compression;
   return load_gltf(scene, options);
 }
 

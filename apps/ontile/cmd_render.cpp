@@ -15,6 +15,7 @@
 #include "render_inspect.h"
 #include "render_report.h"
 #include "scene/gltf_loader.h"
+#include "tiler/gpu_presets.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
 
@@ -23,14 +24,24 @@ namespace {
 
 struct RenderOptions {
   std::string scene, out, report, size = "1280x720", pipeline = "lambert", arch = "tbdr", aov, gbuffer, lights,
-              render_graph = "off", afbc = "off";
+              render_graph = "off", afbc = "off", transaction_elimination = "off", gpu, idvs = "off",
+              varying_precision = "fp32", texture_compression = "none";
+  double camera_pan_deg = 0.0;  // --camera-pan: degrees the camera turns per frame
   bool allow_outside_files = false, progress = false, tiles = false;
   int camera = -1, threads = 0, tile = 16, budget = 128, subpixel_bits = 8;
   int texture_cache_kib = 256, rt_cache_kib = 128, parameter_cache_kib = 0;
   std::vector<std::string> pipeline_options;
   std::optional<int> frames;  // --frames: time this many frames after a warm-up
   InspectOptions inspect;     // --html, --dump-attachments, --tile-grid
+  std::vector<std::string> given;  // the tiler options given explicitly (they override --gpu)
+  bool was_given(const std::string& option) const {
+    return std::find(given.begin(), given.end(), option) != given.end();
+  }
 };
+
+// The options a --gpu preset sets, which an explicit one overrides.
+const std::vector<std::string> kPresetOptions = {"--tile", "--budget", "--afbc", "--transaction-elimination",
+                                                 "--idvs", "--texture-cache-kib", "--parameter-cache-kib"};
 
 // Renders once (the warm-up when timing), then `frames` more times with each frame timed by the
 // wall clock of the whole render call; returns the last frame. Progress counts the timed frames.
@@ -83,14 +94,14 @@ void write_color(const std::filesystem::path& path, const Surface& color, Staged
 }
 
 RenderRun run_of(const RenderOptions& o, const RenderSettings& settings) {
-  return {o.scene, settings, o.aov, o.frames, o.tiles};
+  return {o.scene, settings, o.aov, o.frames, o.tiles, o.gpu, *parse_texture_compression(o.texture_compression)};
 }
 
 // --aov: the AOV pass instead of the pipeline's image, written as a float EXR (with
 // --set msaa=N, each pixel's sample 0: aov_pass.h).
 void run_aov_render(const RenderOptions& o, const RenderSettings& settings, RunOutputs& outputs) {
   const AovKind kind = *parse_aov_kind(o.aov);
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   const AovFrame frame =
       render_timed(o.frames.value_or(0), ms, o.progress, [&] { return render_aov_frame(scene, settings, {kind}); });
@@ -136,6 +147,32 @@ void print_summary(std::FILE* out, const RenderOptions& o, const RenderSettings&
   std::fputs(frame_report_table(report).c_str(), out);
 }
 
+// --gpu: the preset's settings, then the tiler options given explicitly on top of them.
+// Transaction elimination needs 16x16 tiles (panfrost, pan_select_crc_rt): other sizes are refused.
+void apply_gpu_option(const RenderOptions& o, TilerConfig& tiler) {
+  if (!o.gpu.empty()) {
+    const GpuPreset* preset = find_gpu_preset(o.gpu);
+    if (!preset) throw UsageError("--gpu " + o.gpu + ": expected one of " + gpu_preset_names());
+    const TilerConfig given = tiler;
+    apply_gpu_preset(*preset, tiler);
+    if (o.was_given("--tile")) tiler.tile_size_px = given.tile_size_px;
+    if (o.was_given("--budget")) tiler.color_budget_bits_per_px = given.color_budget_bits_per_px;
+    if (o.was_given("--afbc")) tiler.afbc = given.afbc;
+    if (o.was_given("--transaction-elimination")) tiler.transaction_elimination = given.transaction_elimination;
+    if (o.was_given("--idvs")) tiler.idvs = given.idvs;
+    if (o.was_given("--texture-cache-kib")) tiler.texture_cache = given.texture_cache;
+    if (o.was_given("--parameter-cache-kib")) tiler.parameter_cache = given.parameter_cache;
+  }
+  const bool sixteen = tiler.tile_size_px == kTransactionEliminationTilePx &&
+                       (tiler.tile_size_rule == TileSizeRule::Budget || tiler.tile_size_rule == TileSizeRule::Panfrost);
+  if (tiler.transaction_elimination && !sixteen) {
+    throw UsageError("--transaction-elimination on needs 16x16 tiles (CRCs per 16x16 tile, as panfrost), but the "
+                     "tiles are " + (tiler.tile_size_rule == TileSizeRule::Budget
+                                         ? std::to_string(tiler.tile_size_px) + "x" + std::to_string(tiler.tile_size_px)
+                                         : "chosen by --gpu " + o.gpu));
+  }
+}
+
 // Everything that can be checked before loading the scene: a usage error costs no render.
 RenderSettings checked_settings(const RenderOptions& o) {
   if (o.frames && *o.frames < 1) {
@@ -169,6 +206,14 @@ RenderSettings checked_settings(const RenderOptions& o) {
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
   settings.context.tiler.afbc = o.afbc == "on";
+  if (o.transaction_elimination == "on") {
+    settings.context.tiler.transaction_elimination = std::make_shared<TileSignatureHistory>();
+  }
+  settings.context.tiler.idvs = o.idvs == "on";
+  settings.context.tiler.varying_precision =
+      o.varying_precision == "fp16" ? VaryingPrecision::Fp16 : VaryingPrecision::Fp32;
+  apply_gpu_option(o, settings.context.tiler);
+  settings.camera_pan_deg_per_frame = o.camera_pan_deg;
   const std::string ext = std::filesystem::path(o.out).extension().string();
   if (ext != ".png" && ext != ".exr") {
     throw UsageError("--out " + o.out + ": unsupported output extension '" + ext + "' (use .png or .exr)");
@@ -196,16 +241,18 @@ void run_render(const RenderOptions& o) {
     run_aov_render(o, settings, outputs);
     return;
   }
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   std::vector<double> ms;
   // --html and --dump-attachments capture every pass of the first (warm-up) frame: frames are
   // bit-identical, and the timed frames then pay nothing for the copies.
   PassCapture capture;
   bool first_frame = true;
+  int frame_index = 0;
   const RenderedFrame frame = render_timed(o.frames.value_or(0), ms, o.progress, [&] {
     RenderSettings frame_settings = settings;
     if (first_frame && o.inspect.wanted()) frame_settings.context.pass_observer = &capture;
     first_frame = false;
+    frame_settings.frame_index = frame_index++;
     return render_frame(scene, frame_settings);
   });
   const FrameReport& report = frame.outputs.report;
@@ -220,6 +267,10 @@ void run_render(const RenderOptions& o) {
   outputs.commit();
   std::FILE* summary = summary_stream(is_stdout(o.report));
   print_summary(summary, o, settings, scene, report);
+  if (settings.context.tiler.transaction_elimination && !o.frames) {
+    std::fprintf(summary, "note: transaction elimination compares each frame with the previous one; with one frame it "
+                          "eliminates nothing (render more with --frames N)\n");
+  }
   std::fprintf(summary, "wrote %s%s%s\n", o.out.c_str(), o.report.empty() ? "" : " and ", o.report.c_str());
   if (!o.inspect.html.empty()) std::fprintf(summary, "wrote %s\n", o.inspect.html.c_str());
   if (!o.inspect.dump_dir.empty()) std::fprintf(summary, "wrote %zu attachment files into %s\n", dumped, o.inspect.dump_dir.c_str());
@@ -251,7 +302,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--aov", o->aov, "Write an AOV of the lambert geometry instead of the image (.exr; "
                                    "with --set msaa=N, each pixel's sample 0)")
       ->check(CLI::IsMember({"depth", "primitive_id", "normal"}));
-  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large (= --set gbuffer=NAME)");
+  cmd->add_option("--gbuffer", o->gbuffer, "G-buffer layout of forward/deferred pipelines: unity, vulkan-samples, vulkan-samples-large, bjorge (= --set gbuffer=NAME)");
   cmd->add_option("--lights", o->lights, "Generated point lights for forward/deferred pipelines (= --set lights=N)");
   cmd->add_option("--frames", o->frames,
                   "Render N more frames after one warm-up and print their median and minimum time (ms); "
@@ -281,9 +332,39 @@ void add_render_command(CLI::App& app) {
                   "Arm Frame Buffer Compression: on prices single-sample colour attachments of up to 32 bits "
                   "per pixel at their compressed size (TBDR only; docs/memory-model.md); default off")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--transaction-elimination", o->transaction_elimination,
+                  "on: a tile write whose CRC equals the previous frame's is skipped (16x16 tiles only; needs "
+                  "--frames N to have a previous frame; TBDR only; docs/memory-model.md); default off")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--gpu", o->gpu,
+                  "GPU preset: mali-g76, mali-g71 (16x16, 128 bpp, AFBC, transaction elimination, IDVS, 512 KiB L2), "
+                  "panfrost, apple-g13, adreno-630 (those drivers' tile-size rules); explicit --tile, --budget, "
+                  "--afbc, --transaction-elimination, --idvs and cache sizes override it (docs/fidelity.md)")
+      ->check(CLI::IsMember(gpu_preset_list()));
+  cmd->add_option("--camera-pan", o->camera_pan_deg,
+                  "Turn the camera this many degrees about the vertical axis per frame (with --frames: a moving "
+                  "camera, which defeats transaction elimination); default 0")
+      ->check(CLI::Range(-180.0, 180.0));
+  cmd->add_option("--idvs", o->idvs,
+                  "Index-driven vertex shading: on writes varyings to the parameter buffer only for vertices of "
+                  "triangles that survive culling, positions for all (TBDR only); default off")
+      ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_option("--varying-precision", o->varying_precision,
+                  "Stored varying size: fp32 (4 bytes per component, default) or fp16 (2); interpolation "
+                  "stays fp32, so images do not change")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option("--texture-compression", o->texture_compression,
+                  "Storage of the scene's textures for the texture cache: none (default), astc4x4 (1 byte per "
+                  "texel), astc8x8 (0.25), etc2 (0.5, or 1 with alpha); sampling still reads the decoded texels")
+      ->check(CLI::IsMember({"none", "astc4x4", "astc8x8", "etc2"}));
   cmd->add_option("--rt-cache-kib", o->rt_cache_kib, "IMR render-target cache size in KiB (16-way, 64-byte lines; default 128)")
       ->check(CLI::IsMember({16, 32, 64, 128, 256, 512, 1024, 2048}));
-  cmd->callback([o] { run_render(*o); });
+  cmd->callback([o, cmd] {
+    for (const std::string& option : kPresetOptions) {
+      if (cmd->count(option) > 0) o->given.push_back(option);
+    }
+    run_render(*o);
+  });
 }
 
 }  // namespace ontile::cli

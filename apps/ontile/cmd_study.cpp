@@ -7,6 +7,7 @@
 #include "scene/gltf_loader.h"
 #include "studies/architecture_study.h"
 #include "studies/deferred_study.h"
+#include "tiler/gpu_presets.h"
 #include "util/error.h"
 #include "util/heap_tuning.h"
 
@@ -108,6 +109,13 @@ void add_study_command(CLI::App& app) {
                   "Model an L2 for parameter-buffer reads, in KiB (default 0: none)")
       ->check(CLI::Range(0, 65536));
   cmd->add_option("--threads", o->settings.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+  cmd->add_option("--gpu", o->settings.gpu,
+                  "GPU preset instead of --tile/--budget/--parameter-cache-kib (see `ontile render --help`); with "
+                  "transaction elimination each variant renders a first frame the row does not count")
+      ->check(CLI::IsMember(gpu_preset_list()))
+      ->excludes("--tile")
+      ->excludes("--budget")
+      ->excludes("--parameter-cache-kib");
   add_progress_flag(cmd, o->progress);
   cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
   cmd->add_option("--json", o->json,

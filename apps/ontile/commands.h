@@ -59,8 +59,10 @@ void parse_size(const std::string& text, int& width_px, int& height_px, const ch
 // buffer and image URIs that leave the scene file's folder (docs/robustness.md).
 void add_scene_options(CLI::App* cmd, std::string& scene, bool& allow_outside_files,
                        const std::string& description);
-// Loads the glTF scene with the loader options the verb's flags chose.
-Scene load_scene(const std::string& scene, bool allow_outside_files);
+// Loads the glTF scene with the loader options the verb's flags chose; `texture_compression`
+// lays its images out in that block format for the texture-cache model (--texture-compression).
+Scene load_scene(const std::string& scene, bool allow_outside_files,
+                 TextureCompression texture_compression = TextureCompression::None);
 
 // --progress: progress on stderr even when it is not a terminal (util/progress.h).
 inline void add_progress_flag(CLI::App* cmd, bool& progress) {

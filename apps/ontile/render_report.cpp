@@ -27,6 +27,12 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
       {"parameter_cache_bytes", tiler.parameter_cache.size_bytes},
       {"render_target_cache_bytes", tiler.render_target_cache.size_bytes},
       {"afbc", tiler.afbc},
+      {"transaction_elimination", tiler.transaction_elimination != nullptr},
+      {"gpu", run.gpu.empty() ? nlohmann::json() : nlohmann::json(run.gpu)},
+      {"camera_pan_deg_per_frame", s.camera_pan_deg_per_frame},
+      {"idvs", tiler.idvs},
+      {"varying_precision", tiler.varying_precision == VaryingPrecision::Fp16 ? "fp16" : "fp32"},
+      {"texture_compression", texture_compression_name(run.texture_compression)},
       {"aov", run.aov.empty() ? nlohmann::json() : nlohmann::json(run.aov)},
       {"frames", run.frames ? nlohmann::json(*run.frames) : nlohmann::json()},
       {"tiles", run.tiles}};

@@ -18,6 +18,8 @@ struct RenderRun {
   std::string aov;               // --aov, empty when the pipeline's image was rendered
   std::optional<int> frames;     // --frames
   bool tiles = false;            // --tiles: per-tile statistics in the report
+  std::string gpu;               // --gpu preset, empty without it
+  TextureCompression texture_compression = TextureCompression::None;  // scene images' storage
 };
 
 nlohmann::json render_report_json(const FrameReport& report, const RenderRun& run);

@@ -95,7 +95,9 @@ nlohmann::json pass_json(const PassReport& p) {
                            {"bytes_stored", a.bytes_stored},
                            {"bytes_resolved", a.bytes_resolved},
                            {"afbc", a.afbc},
-                           {"afbc_bytes_saved", a.afbc_bytes_saved}});
+                           {"afbc_bytes_saved", a.afbc_bytes_saved},
+                           {"te_tiles_eliminated", a.te_tiles_eliminated},
+                           {"te_bytes_saved", a.te_bytes_saved}});
   }
   const uint64_t pixels = static_cast<uint64_t>(p.width_px) * p.height_px;
   return {{"name", p.name},
@@ -105,12 +107,15 @@ nlohmann::json pass_json(const PassReport& p) {
           {"samples", p.samples},
           {"tile_size_px", {p.tile_width_px, p.tile_height_px}},
           {"tile_size_reduced", p.tile_size_reduced},
+          {"transaction_elimination", p.transaction_elimination},
           {"color_bits_per_px", p.color_bits_per_px},
           {"tiles", p.tiles_total},
           {"tiles_executed", p.tiles.tiles_executed},
           {"bytes_read", p.bytes_read()},
           {"bytes_written", p.bytes_written()},
           {"parameter_buffer", {{"bytes_written", p.geometry.parameter_bytes_written},
+                                {"position_bytes_written", p.geometry.parameter_position_bytes_written},
+                                {"varying_bytes_written", p.geometry.parameter_varying_bytes_written},
                                 {"bytes_read", p.tiles.parameter_bytes_read},
                                 {"cache", {{"accesses", p.parameter_cache.accesses},
                                            {"hits", p.parameter_cache.hits},
@@ -154,7 +159,7 @@ nlohmann::json frame_report_json(const FrameReport& frame, const FrameReportOpti
   nlohmann::json categories = nlohmann::json::object();
   for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
   nlohmann::json report = {{"format", "ontile-report"},
-                            {"schema_version", 3},  // docs/report.schema.json
+                            {"schema_version", 4},  // docs/report.schema.json
                             {"frame", {{"bytes_read", frame.bytes_read()},
                                        {"bytes_written", frame.bytes_written()},
                                        {"by_category", categories}}},
@@ -193,11 +198,15 @@ std::string frame_report_table(const FrameReport& frame) {
       out << line;
     }
     for (const AttachmentTraffic& a : p.attachments) {
-      std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s%s\n",
+      const std::string te = a.te_tiles_eliminated
+                                 ? "  TE skipped " + std::to_string(a.te_tiles_eliminated) + " tiles, " + mib(a.te_bytes_saved)
+                                 : "";
+      std::snprintf(line, sizeof line, "  %-20s %-10s %-9s load %12s  store %12s  resolve %12s%s%s\n",
                     a.name.c_str(), format_name(a.format), a.transient ? "transient" : "memory",
                     mib(a.bytes_loaded).c_str(), mib(a.bytes_stored).c_str(),
                     mib(a.bytes_resolved).c_str(),
-                    a.afbc ? ("  AFBC saved " + mib(static_cast<uint64_t>(std::max<int64_t>(a.afbc_bytes_saved, 0)))).c_str() : "");
+                    a.afbc ? ("  AFBC saved " + mib(static_cast<uint64_t>(std::max<int64_t>(a.afbc_bytes_saved, 0)))).c_str() : "",
+                    te.c_str());
       out << line;
     }
     std::snprintf(line, sizeof line, "  %-20s %llu accesses, %llu hits, %llu misses, read %s\n", "texture cache",

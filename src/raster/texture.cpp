@@ -67,7 +67,7 @@ template <Storage kStorage>
 inline glm::vec4 load_texel(const Texture2D::Level& level, const TexelDecoder& decoder, int x,
                             int y) {
   const size_t texel = static_cast<size_t>(y) * level.width + x;
-  if (decoder.trace) record_texel_address(level.address + texel * level.memory_bytes_per_texel);
+  if (decoder.trace) record_texel_address(level.texel_byte_address(texel));
   if constexpr (kStorage == Storage::Float32) {
     const float* p = level.texels32f.data() + texel * kChannels;
     return {p[0], p[1], p[2], p[3]};
@@ -204,7 +204,7 @@ class Linear8Sampler {
  private:
   glm::vec4 load(const Texture2D::Level& level, size_t texel) {
     if (sink_) {
-      const uint64_t granule = (level.address + texel * level.memory_bytes_per_texel) >> 6;
+      const uint64_t granule = level.texel_byte_address(texel) >> 6;
       if (granule != last_) {
         sink_->push_back(granule);
         last_ = granule;
@@ -331,11 +331,14 @@ void check_size(int width, int height, size_t values, const std::string& name) {
 
 std::shared_ptr<const Texture2D> Texture2D::from_rgba8(int width, int height,
                                                        std::vector<uint8_t> rgba, bool srgb,
-                                                       std::string name) {
+                                                       std::string name,
+                                                       TextureCompression compression) {
   check_size(width, height, rgba.size(), name);
   std::shared_ptr<Texture2D> texture(new Texture2D());
   texture->encoding_ = srgb ? TexelEncoding::Srgb8 : TexelEncoding::Unorm8;
+  texture->compression_ = compression;
   texture->name_ = std::move(name);
+  texture->etc2_alpha_ = compression == TextureCompression::Etc2 && has_translucent_texel(rgba);
   Level base;
   base.width = width;
   base.height = height;
@@ -406,11 +409,24 @@ std::shared_ptr<const Texture2D> Texture2D::view_of_surface(int width, int heigh
 }
 
 void Texture2D::assign_addresses(int memory_bytes_per_texel) {
+  const BlockFormat block = block_format(compression_, etc2_alpha_);
   uint64_t size_bytes = 0;
   for (Level& level : levels_) {
     level.address = size_bytes;  // offset for now; the base is added once reserved
     level.memory_bytes_per_texel = static_cast<uint32_t>(memory_bytes_per_texel);
-    size_bytes += static_cast<uint64_t>(level.width) * level.height * memory_bytes_per_texel;
+    if (block.bytes == 0) {
+      size_bytes += static_cast<uint64_t>(level.width) * level.height * memory_bytes_per_texel;
+      continue;
+    }
+    // Partial blocks at the right and bottom edges (and levels smaller than a block) take a
+    // whole block, as in every block format.
+    const int side_x = 1 << block.width_shift, side_y = 1 << block.height_shift;
+    level.block_bytes = block.bytes;
+    level.block_width_shift = block.width_shift;
+    level.block_height_shift = block.height_shift;
+    level.blocks_per_row = static_cast<uint32_t>((level.width + side_x - 1) / side_x);
+    const uint64_t block_rows = static_cast<uint64_t>((level.height + side_y - 1) / side_y);
+    size_bytes += uint64_t{level.blocks_per_row} * block_rows * block.bytes;
   }
   const uint64_t reserved_bytes =
       (size_bytes + kTextureAlignmentBytes - 1) / kTextureAlignmentBytes * kTextureAlignmentBytes;
@@ -459,9 +475,10 @@ uint64_t Texture2D::level_offset_bytes(int level) const {
 int Texture2D::memory_bytes_per_texel() const {
   return static_cast<int>(levels_[0].memory_bytes_per_texel);
 }
+TextureCompression Texture2D::compression() const { return compression_; }
 uint64_t Texture2D::texel_address(int level, int x, int y) const {
   const Level& l = levels_[level];
-  return l.address + (static_cast<uint64_t>(y) * l.width + x) * l.memory_bytes_per_texel;
+  return l.texel_byte_address(static_cast<size_t>(y) * static_cast<size_t>(l.width) + static_cast<size_t>(x));
 }
 
 glm::vec4 Texture2D::fetch(int level, int x, int y) const {

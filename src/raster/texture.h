@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/pixel_format.h"
+#include "raster/texture_compression.h"
 
 namespace ontile {
 
@@ -42,9 +43,11 @@ class Texture2D {
   // last row/column folded in: the last texel along an odd axis averages 3 texels, 1/3 each)
   // from base-level RGBA8 texels, row-major, top row first. Levels are re-encoded to 8 bits
   // with round to nearest (sRGB encode for srgb). Throws Error (naming `name`) on a bad size.
+  // `compression` lays the levels out in that block format (see TextureCompression).
   static std::shared_ptr<const Texture2D> from_rgba8(int width, int height,
                                                      std::vector<uint8_t> rgba, bool srgb,
-                                                     std::string name = {});
+                                                     std::string name = {},
+                                                     TextureCompression compression = TextureCompression::None);
   static std::shared_ptr<const Texture2D> from_rgba32f(int width, int height,
                                                        std::vector<float> rgba,
                                                        std::string name = {});
@@ -117,14 +120,16 @@ class Texture2D {
   uint64_t base_address() const;
   uint64_t level_offset_bytes(int level) const;  // prefix sum of the sizes of levels < level
   int memory_bytes_per_texel() const;            // the stored size: a surface's for snapshots
-  // base + level offset + (y * width + x) * memory_bytes_per_texel.
+  TextureCompression compression() const;
+  // Level::texel_byte_address of texel (x, y).
   uint64_t texel_address(int level, int x, int y) const;
 
   // One texel, decoded to linear float. x, y must be inside the level.
   glm::vec4 fetch(int level, int x, int y) const;
 
   // One level's texels for kernels that compute their own texel indices and report their own
-  // texel trace: load() decodes exactly as fetch() does, without its per-call format dispatch
+  // texel trace (uncompressed textures only: `address` and `memory_bytes_per_texel` describe a
+  // texel-per-texel layout, which render targets, the only textures those kernels read, have): load() decodes exactly as fetch() does, without its per-call format dispatch
   // and without tracing. Valid while the texture lives.
   struct TexelView {
     const float* texels32f = nullptr;     // Float32: RGBA floats, row-major; null otherwise
@@ -176,6 +181,19 @@ class Texture2D {
     PixelFormat surface_format = PixelFormat::RGBA8_UNORM;
     // The RGBA8 texels of an Unorm8/Srgb8 level, owned or viewed.
     const uint8_t* bytes8() const { return surface_bytes ? surface_bytes : texels8.data(); }
+    // Block-compressed storage (TextureCompression): bytes per block (0: uncompressed), block
+    // size as shifts (4x4: 2, 8x8: 3) and blocks per row, blocks stored row-major.
+    uint32_t block_bytes = 0;
+    uint32_t blocks_per_row = 0;
+    int block_width_shift = 0, block_height_shift = 0;
+    // The simulated byte address the texture cache sees for texel `texel` (row-major index):
+    // the texel's own bytes, or the start of the block holding it.
+    uint64_t texel_byte_address(size_t texel) const {
+      if (block_bytes == 0) return address + texel * memory_bytes_per_texel;
+      const size_t y = texel / static_cast<size_t>(width);
+      const size_t x = texel - y * static_cast<size_t>(width);
+      return address + ((y >> block_height_shift) * blocks_per_row + (x >> block_width_shift)) * block_bytes;
+    }
   };
 
  private:
@@ -183,10 +201,13 @@ class Texture2D {
   std::vector<Level> levels_;
   bool render_target_ = false;
   TexelEncoding encoding_ = TexelEncoding::Unorm8;
+  TextureCompression compression_ = TextureCompression::None;
+  bool etc2_alpha_ = false;  // Etc2 with a texel whose alpha is below 255: 16-byte blocks
   std::string name_;
   uint64_t base_address_ = 0;
 
-  // Gives the levels their addresses: reserves this texture's range of the address space.
+  // Gives the levels their addresses (laid out in compression_'s blocks): reserves this
+  // texture's range of the address space.
   void assign_addresses(int memory_bytes_per_texel);
 };
 

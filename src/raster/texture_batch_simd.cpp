@@ -145,6 +145,8 @@ bool sample_batch_nearest(const Texture2D& texture, const SamplerDesc& sampler, 
       sampler.wrap_u != WrapMode::ClampToEdge || sampler.wrap_v != WrapMode::ClampToEdge) {
     return false;
   }
+  // Block-compressed storage maps texels to blocks; the generic path traces that.
+  if (texture.compression() != TextureCompression::None) return false;
   const Texture2D::TexelView view = texture.texel_view(0);
   // Lanes index float channels as 32-bit integers (4 * texel).
   if (int64_t{view.width} * view.height >= (int64_t{1} << 29)) return false;

@@ -99,7 +99,8 @@ void footprint_taps(DI di, const Texture2D::Level& level, const int32_t* i0, con
 
 // Appends the quad's texel granules to the trace in the scalar sampler's order: lane by lane,
 // level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
-// Granules are computed on 64-bit lanes for 4-byte texels (every 8-bit texture).
+// Granules are computed on 64-bit lanes for uncompressed 4-byte texels (every 8-bit texture not
+// block-compressed); block-compressed levels map each texel to its block's address.
 void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
   alignas(32) uint64_t granule[2][4][kLanes];  // [level][tap][lane]
   const hn::ScalableTag<uint64_t> d64;
@@ -109,7 +110,7 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
   for (int l = 0; l < in.level_count; ++l) {
     const Texture2D::Level& level = *in.levels[l];
     for (int t = 0; t < 4; ++t) {
-      if (level.memory_bytes_per_texel == 4 && n <= kLanes) {
+      if (level.memory_bytes_per_texel == 4 && level.block_bytes == 0 && n <= kLanes) {
         const auto base = hn::Set(d64, level.address);
         for (size_t i = 0; i < kLanes; i += n) {
           const auto texel = hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, taps[l][t] + i)));
@@ -118,8 +119,7 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
         continue;
       }
       for (int lane = 0; lane < kLanes; ++lane) {
-        granule[l][t][lane] =
-            (level.address + static_cast<uint64_t>(taps[l][t][lane]) * level.memory_bytes_per_texel) >> 6;
+        granule[l][t][lane] = level.texel_byte_address(static_cast<size_t>(taps[l][t][lane])) >> 6;
       }
     }
   }
@@ -128,8 +128,7 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
   // appends the same tail again.
   uint64_t tail[2 * 4 * kLanes];
   const Texture2D::Level& level0 = *in.levels[0];
-  const uint64_t first =
-      (level0.address + static_cast<uint64_t>(taps[0][0][0]) * level0.memory_bytes_per_texel) >> 6;
+  const uint64_t first = level0.texel_byte_address(static_cast<size_t>(taps[0][0][0])) >> 6;
   uint64_t last = first;
   int tail_count = 0;
   for (int lane = 0; lane < kLanes; ++lane) {

@@ -41,6 +41,9 @@ struct GltfLoadOptions {
   // Buffer and image URIs must name files inside the scene file's folder (or below it);
   // true also allows absolute paths and ".." that leave it.
   bool allow_uris_outside_scene_folder = false;
+  // Storage of the scene's images for the texture-cache model (--texture-compression): their
+  // memory layout and bytes, never the texels sampled.
+  TextureCompression texture_compression = TextureCompression::None;
   GltfLimits limits;
 };
 

@@ -182,8 +182,8 @@ class TextureBuilder {
     std::string name = !image.name.empty()  ? image.name
                        : !image.uri.empty() ? image.uri
                                             : "image " + std::to_string(image_index);
-    auto texture = Texture2D::from_rgba8(
-        image.width, image.height, to_rgba8(context_, image_index, image), srgb, std::move(name));
+    auto texture = Texture2D::from_rgba8(image.width, image.height, to_rgba8(context_, image_index, image),
+                                         srgb, std::move(name), context_.options.texture_compression);
     cache_.emplace(key, texture);
     return texture;
   }

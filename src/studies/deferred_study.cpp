@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "pipelines/kit/render_frame.h"
+#include "tiler/gpu_presets.h"
 #include "studies/study_format.h"
 #include "util/error.h"
 
@@ -67,10 +68,17 @@ std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, cons
     settings.context.tiler.tile_size_px = s.tile_size_px;
     settings.context.tiler.color_budget_bits_per_px = s.color_budget_bits_per_px;
     settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(s.parameter_cache_kib) * 1024;
+    if (!s.gpu.empty()) {
+      const GpuPreset* preset = find_gpu_preset(s.gpu);
+      if (!preset) throw Error("study: unknown GPU preset '" + s.gpu + "' (known: " + gpu_preset_names() + ")");
+      apply_gpu_preset(*preset, settings.context.tiler);
+    }
     for (const auto& [key, value] : v.options) settings.options.set(key, value);
     StudyRow row;
     row.variant = v;
     std::vector<double> times;
+    // Transaction elimination compares with the previous frame: one frame first fills the CRCs.
+    if (settings.context.tiler.transaction_elimination) render_frame(scene, settings);
     for (int f = 0; f < s.frames; ++f) {
       if (s.progress) s.progress(++frames_done, frames_total, v.label);
       const RenderedFrame frame = render_frame(scene, settings);
@@ -97,12 +105,18 @@ std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, cons
 std::string deferred_study_markdown(const std::vector<StudyRow>& rows, const StudySettings& s,
                                     const std::string& scene_name) {
   std::string md;
+  if (!s.gpu.empty()) {
+    md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", --gpu " +
+          s.gpu + " (" + find_gpu_preset(s.gpu)->description + "), " + std::to_string(s.lights) +
+          " point lights; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+  } else {
   md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", " +
         std::to_string(s.tile_size_px) + "x" + std::to_string(s.tile_size_px) + " tiles, " +
         std::to_string(s.color_budget_bits_per_px) + "-bit colour budget, " + std::to_string(s.lights) +
         " point lights" +
         (s.parameter_cache_kib > 0 ? ", a " + std::to_string(s.parameter_cache_kib) + " KiB parameter-buffer read cache" : "") +
         "; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+  }
   md += "| variant | passes | tile | tiles | read | written | attachment load | attachment store | resolve | texture | "
         "vertex+index | param. write | param. read | frame ms |\n";
   md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

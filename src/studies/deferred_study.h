@@ -30,6 +30,10 @@ struct StudySettings {
   int lights = 48;  // the sample's Sponza lights: 8 x 2 x 3 point lights
   int frames = 1;   // frame time is the median over this many frames
   int parameter_cache_kib = 0;  // an L2 model for parameter-buffer reads (0: none)
+  // A --gpu preset (tiler/gpu_presets.h) instead of the three settings above; with transaction
+  // elimination each variant renders one more frame first, so its row is the steady state of a
+  // static camera (every variant starts from an empty CRC history).
+  std::string gpu;
   ProgressCallback progress;    // optional: hears of every rendered frame
 };
 

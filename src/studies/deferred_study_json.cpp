@@ -42,6 +42,7 @@ nlohmann::json deferred_study_json(const std::vector<StudyRow>& rows, const Stud
                          {"budget_bits_per_px", s.color_budget_bits_per_px},
                          {"lights", s.lights},
                          {"parameter_cache_kib", s.parameter_cache_kib},
+                         {"gpu", s.gpu.empty() ? nlohmann::json() : nlohmann::json(s.gpu)},
                          {"variants", variants}};
   const StudyRow* two_passes = study_format::find_row(rows, std::string("two render passes"));
   const StudyRow* subpasses = study_format::find_row(rows, std::string("subpasses, transient"));

@@ -17,6 +17,8 @@ void GeometryCounters::add(const GeometryCounters& o) {
   index_bytes_read += o.index_bytes_read;
   vertex_bytes_read += o.vertex_bytes_read;
   parameter_bytes_written += o.parameter_bytes_written;
+  parameter_position_bytes_written += o.parameter_position_bytes_written;
+  parameter_varying_bytes_written += o.parameter_varying_bytes_written;
 }
 
 void TileCounters::add(const TileCounters& o) {

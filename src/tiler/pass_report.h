@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "raster/pixel_format.h"
-#include "tiler/detail/texture_cache.h"
+#include "memory/pass_memory.h"
 
 namespace ontile {
 
@@ -25,6 +25,10 @@ struct GeometryCounters {
   uint64_t index_bytes_read = 0;
   uint64_t vertex_bytes_read = 0;      // unique vertices fetched per draw
   uint64_t parameter_bytes_written = 0;
+  // Of parameter_bytes_written, the post-transform vertices' positions and varyings (the rest
+  // are primitive records and tile-list entries).
+  uint64_t parameter_position_bytes_written = 0;
+  uint64_t parameter_varying_bytes_written = 0;
 
   void add(const GeometryCounters& o);
 };
@@ -42,19 +46,6 @@ struct TileCounters {
   uint64_t cells_hiz_rejected = 0;
 
   void add(const TileCounters& o);
-};
-
-struct AttachmentTraffic {
-  std::string name;
-  PixelFormat format = PixelFormat::RGBA8_UNORM;
-  bool transient = false;
-  uint64_t bytes_loaded = 0;
-  uint64_t bytes_stored = 0;    // Store of all samples
-  uint64_t bytes_resolved = 0;  // Resolve writes of the averaged pixel
-  // AFBC (TilerConfig::afbc): whether any of the above was priced compressed, and the bytes that
-  // saved against the uncompressed size (negative when headers outweigh the savings).
-  bool afbc = false;
-  int64_t afbc_bytes_saved = 0;
 };
 
 // One tile's share of a pass: its primitive list, fragment work and the external bytes charged
@@ -100,6 +91,7 @@ struct PassReport {
   TextureTraffic texture;
   TextureTraffic parameter_cache;  // lookups when the parameter cache is modelled (else zero)
   uint64_t render_target_cache_hits = 0, render_target_cache_misses = 0;  // IMR only
+  bool transaction_elimination = false;  // TE compared this pass's tiles (16x16 tiles, TE on)
   // Texture bytes by the texture they were read from, largest first (ties by name).
   std::vector<TextureSourceTraffic> texture_sources;
   std::vector<TileStats> tile_stats;  // tiles_total entries, row-major (tiles_x() per row)

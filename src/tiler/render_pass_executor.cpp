@@ -11,8 +11,8 @@
 
 #include "raster/sample_pattern.h"
 #include "raster/texture.h"
-#include "tiler/detail/attachment_pricing.h"
 #include "tiler/detail/parameter_buffer.h"
+#include "tiler/detail/parameter_reads.h"
 #include "tiler/detail/tile_executor.h"
 #include "tiler/detail/trace_buffers.h"
 #include "util/error.h"
@@ -136,23 +136,10 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// An IMR has no binning and no tile memory: no parameter buffer, and attachment traffic is
-// what the render-target cache moves (see imr_model.h).
-void apply_imr_model(const RenderPassDesc& pass, const TilerConfig& config,
-                     const std::vector<TileTrace>& traces, PassReport& report) {
-  const ImrTraffic imr = simulate_imr_pass(pass, traces, config.render_target_cache);
-  report.architecture = "imr";
-  report.geometry.parameter_bytes_written = 0;
-  report.tiles.parameter_bytes_read = 0;
-  report.render_target_cache_hits = imr.cache_hits;
-  report.render_target_cache_misses = imr.cache_misses;
-  for (size_t a = 0; a < report.attachments.size(); ++a) {
-    AttachmentTraffic& t = report.attachments[a];
-    t.transient = false;  // an IMR keeps every attachment in memory
-    t.bytes_loaded = imr.attachments[a].bytes_read;
-    t.bytes_stored = imr.attachments[a].bytes_written - imr.attachments[a].bytes_resolved;
-    t.bytes_resolved = imr.attachments[a].bytes_resolved;
-  }
+SurfaceBytes bytes_of(const Surface* s) {
+  if (!s) return {};
+  return SurfaceBytes{s->format(), s->width(), s->height(), s->samples(), s->pixel_bytes(0, 0),
+                      static_cast<size_t>(s->width()) * s->samples() * bytes_per_pixel(s->format())};
 }
 
 // The tile's own counters, and its primitive list, into its statistics.
@@ -196,6 +183,44 @@ void attribute_texture_misses(const TextureReplayDetail& detail, uint64_t line_b
 
 }  // namespace
 
+MemoryConfig memory_config_of(const TilerConfig& config) {
+  MemoryConfig m;
+  m.immediate_mode = config.architecture == Architecture::Imr;
+  m.texture_cache = config.texture_cache;
+  m.parameter_cache = config.parameter_cache;
+  m.render_target_cache = config.render_target_cache;
+  m.afbc = config.afbc;
+  m.transaction_elimination = config.transaction_elimination;
+  return m;
+}
+
+PassMemoryDesc describe_pass_memory(const RenderPassDesc& pass, int tile_width_px, int tile_height_px) {
+  PassMemoryDesc m;
+  m.name = pass.name;
+  m.width_px = pass.width_px;
+  m.height_px = pass.height_px;
+  m.samples = pass.samples;
+  m.tile_width_px = tile_width_px;
+  m.tile_height_px = tile_height_px;
+  m.depth_index = pass.depth_index;
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    const AttachmentDesc& d = pass.attachments[a];
+    AttachmentMemory am;
+    am.name = d.name;
+    am.format = d.format;
+    am.is_depth = static_cast<int>(a) == pass.depth_index;
+    am.loads = d.load == LoadAction::Load && d.surface;
+    am.clears = d.load == LoadAction::Clear;
+    am.stores = (d.store == StoreAction::Store || d.store == StoreAction::StoreAndResolve) && d.surface;
+    am.resolves = d.store == StoreAction::Resolve || d.store == StoreAction::StoreAndResolve;
+    am.surface = bytes_of(d.surface);
+    am.resolve_surface = bytes_of(d.resolve_surface);
+    m.attachments.push_back(am);
+  }
+  for (const SubpassDesc& sub : pass.subpasses) m.subpass_color_outputs.push_back(sub.color_outputs);
+  return m;
+}
+
 void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& tile_width_px,
                       int& tile_height_px) {
   tile_width_px = config.tile_size_px;
@@ -212,8 +237,33 @@ void select_tile_size(const TilerConfig& config, int color_bits_per_px, int& til
   }
 }
 
+TileSize pass_tile_size(const TilerConfig& config, const RenderPassDesc& pass) {
+  TileMemoryUse use;
+  use.samples = pass.samples;
+  for (size_t a = 0; a < pass.attachments.size(); ++a) {
+    if (static_cast<int>(a) == pass.depth_index) {
+      use.depth = pass.attachments[a].format;
+    } else {
+      use.colors.push_back(pass.attachments[a].format);
+    }
+  }
+  switch (config.tile_size_rule) {
+    case TileSizeRule::Panfrost:
+      return panfrost_tile_size(use, config.tile_buffer_bytes, config.tile_buffer_pipelining_required);
+    case TileSizeRule::Asahi:
+      return asahi_tile_size(use);
+    case TileSizeRule::Freedreno:
+      return freedreno_tile_size(use, pass.width_px, pass.height_px, config.gmem);
+    case TileSizeRule::Budget:
+      break;
+  }
+  TileSize size;
+  select_tile_size(config, color_bits_per_pixel(pass), size.width_px, size.height_px);
+  return size;
+}
+
 PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& config,
-                               TextureCache& texture_cache) {
+                               MemoryModel& external) {
   if (config.tile_size_px < 2 || config.tile_size_px > 256 ||
       (config.tile_size_px & (config.tile_size_px - 1)) != 0) {
     throw Error("tile size " + std::to_string(config.tile_size_px) +
@@ -230,22 +280,32 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   report.height_px = pass.height_px;
   report.samples = pass.samples;
   report.color_bits_per_px = color_bits_per_pixel(pass);
-  select_tile_size(config, report.color_bits_per_px, report.tile_width_px, report.tile_height_px);
-  report.tile_size_reduced = report.tile_width_px * report.tile_height_px <
-                             config.tile_size_px * config.tile_size_px;
+  const TileSize tile = pass_tile_size(config, pass);
+  report.tile_width_px = tile.width_px;
+  report.tile_height_px = tile.height_px;
+  // Freedreno sizes bins from GMEM and the target, with no largest tile to fall short of.
+  report.tile_size_reduced = config.tile_size_rule != TileSizeRule::Freedreno &&
+                             report.tile_width_px * report.tile_height_px <
+                                 config.tile_size_px * config.tile_size_px;
 
   TileGrid grid{pass.width_px, pass.height_px, report.tile_width_px, report.tile_height_px,
                 config.subpixel_bits};
   report.tiles_total = static_cast<uint64_t>(grid.tile_count());
 
   const auto bin_start = std::chrono::steady_clock::now();
-  const ParameterBuffer params = bin_triangles(pass, grid);
+  const VertexOutputModel vertex_output{
+      config.idvs, config.varying_precision == VaryingPrecision::Fp16 ? 2u : 4u};
+  const ParameterBuffer params = bin_triangles(pass, grid, vertex_output);
   report.binning_ms = ms_since(bin_start);
   report.geometry = params.counters;
+  const ParameterBufferWrites charged = external.parameter_buffer_written(
+      {params.counters.parameter_bytes_written, params.counters.parameter_position_bytes_written,
+       params.counters.parameter_varying_bytes_written});
+  report.geometry.parameter_bytes_written = charged.bytes;
+  report.geometry.parameter_position_bytes_written = charged.position_bytes;
+  report.geometry.parameter_varying_bytes_written = charged.varying_bytes;
 
-  // AFBC prices loads at the size of the surfaces' contents before the pass.
-  const bool imr = config.architecture == Architecture::Imr;
-  const AttachmentPricing pricing(pass, config.afbc && !imr);
+  external.begin_pass(describe_pass_memory(pass, grid.tile_width_px, grid.tile_height_px));
   const auto tiles_start = std::chrono::steady_clock::now();
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
@@ -262,22 +322,30 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
     TileCounters tile_counters;
     execute_tile(pass, params, tile, memory, tile_counters, traces[tile],
-                 texel_buffers.local(), imr, config.hierarchical_z);
+                 texel_buffers.local(), external, config.hierarchical_z);
     counters.local().add(tile_counters);
     record_tile_counters(tile_counters, params, tile, stats);
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
   TextureReplayDetail texture_detail;
-  report.texture = replay_texture_traces(texture_cache, traces, &texture_detail);
-  attribute_texture_misses(texture_detail, texture_cache.config().line_bytes, report);
-  if (config.parameter_cache.size_bytes > 0 && config.architecture == Architecture::Tbdr) {
-    report.parameter_cache = replay_parameter_reads(params, pass, config.parameter_cache);
-    report.tiles.parameter_bytes_read = report.parameter_cache.bytes_read;
-  }
+  report.texture = external.texel_accesses(traces, &texture_detail);
+  attribute_texture_misses(texture_detail, external.texture_cache_config().line_bytes, report);
+  external.fragments(traces);
+  if (external.replays_parameter_reads()) replay_parameter_reads(params, pass, external);
+  report.tiles.parameter_bytes_read = external.parameter_buffer_read(report.tiles.parameter_bytes_read,
+                                                                     report.parameter_cache);
 
-  pricing.price(grid, report, !imr);
-  if (imr) apply_imr_model(pass, config, traces, report);
+  PassAttachmentTraffic attachments = external.end_pass();
+  report.architecture = attachments.architecture;
+  report.attachments = std::move(attachments.attachments);
+  report.render_target_cache_hits = attachments.render_target_cache_hits;
+  report.render_target_cache_misses = attachments.render_target_cache_misses;
+  report.transaction_elimination = attachments.transaction_elimination;
+  for (size_t t = 0; t < report.tile_stats.size(); ++t) {
+    report.tile_stats[t].bytes_loaded = attachments.tile_bytes_loaded[t];
+    report.tile_stats[t].bytes_stored = attachments.tile_bytes_stored[t];
+  }
   return report;
 }
 

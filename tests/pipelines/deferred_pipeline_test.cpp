@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "pipelines/kit/render_frame.h"
+#include "support/wall_scene.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
 
@@ -24,33 +25,6 @@ RenderedFrame render(const Scene& scene, const std::string& pipeline, int w, int
   s.context.threads = 2;
   for (const auto& [key, value] : options) s.options.set(key, value);
   return render_frame(scene, s);
-}
-
-// A rough metal-and-plastic wall filling the whole view, so every pixel holds geometry.
-Scene wall_scene() {
-  Scene scene;
-  MeshPrimitive quad;
-  quad.positions = {{-100, -100, -5}, {100, -100, -5}, {100, 100, -5}, {-100, 100, -5}};
-  quad.normals.assign(4, glm::vec3(0, 0, 1));
-  quad.indices = {0, 1, 2, 0, 2, 3};
-  quad.material = 0;
-  for (const glm::vec3& p : quad.positions) quad.bounds.extend(p);
-  scene.meshes.push_back({"wall", {quad}});
-  Material m;
-  m.base_color_factor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
-  m.metallic_factor = 0.3f;
-  m.roughness_factor = 0.4f;
-  scene.materials.push_back(m);
-  MeshInstance instance;
-  instance.mesh = 0;
-  instance.world_bounds = quad.bounds;
-  scene.instances.push_back(instance);
-  scene.world_bounds = quad.bounds;
-  Camera camera;
-  camera.znear = 0.1f;
-  camera.zfar = 50.0f;
-  scene.cameras.push_back(camera);
-  return scene;
 }
 
 const AttachmentTraffic& attachment(const FrameReport& report, const std::string& pass, const std::string& name) {
@@ -72,7 +46,7 @@ const PassReport& pass_named(const FrameReport& report, const std::string& name)
 
 TEST(DeferredPipelines, ClassicAndSubpassImagesAreBitIdentical) {
   const Scene scene = load_gltf(kDemo);
-  for (const std::string preset : {"vulkan-samples", "unity", "vulkan-samples-large"}) {
+  for (const std::string preset : {"vulkan-samples", "unity", "vulkan-samples-large", "bjorge"}) {
     for (const std::string lights : {"0", "1", "64"}) {
       const RenderedFrame classic = render(scene, "deferred-classic", 200, 112, {{"gbuffer", preset}, {"lights", lights}});
       const RenderedFrame subpass = render(scene, "deferred-subpass", 200, 112, {{"gbuffer", preset}, {"lights", lights}});
@@ -92,7 +66,7 @@ TEST(DeferredPipelines, LightsChangeTheImageAndTransientOffDoesNot) {
 }
 
 TEST(DeferredPipelines, AttachmentTrafficIsTheAnalyticPerPixelFormula) {
-  const Scene scene = wall_scene();
+  const Scene scene = test::wall_scene();
   const int w = 256, h = 128;
   const uint64_t px = uint64_t(w) * h;
   {  // vulkan-samples, two passes: G-buffer pass stores albedo + normal + depth (4+4+4 B/px)
@@ -217,7 +191,7 @@ TEST(DeferredPipelines, ForwardAndDeferredAgreeUpToGBufferQuantisation) {
 }
 
 TEST(DeferredPipelines, BadOptionsAreErrors) {
-  const Scene scene = wall_scene();
+  const Scene scene = test::wall_scene();
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"gbuffer", "fat"}}), Error);
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"lights", "-1"}}), Error);
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"transient", "off"}}), Error);

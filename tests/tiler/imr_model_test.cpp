@@ -5,7 +5,8 @@
 
 #include "context/frame_report.h"
 #include "support/raster_harness.h"
-#include "tiler/detail/imr_model.h"
+#include "memory/imr_model.h"
+#include "tiler/render_pass_executor.h"
 #include "util/error.h"
 
 namespace ontile::test {
@@ -46,7 +47,7 @@ TEST(ImrModel, ClearStoreWithoutDrawsWritesTheSurfaceOnce) {
   const RenderPassDesc pass =
       pass_of(8, 8, 1, {attachment(PixelFormat::RGBA8_UNORM, LoadAction::Clear, StoreAction::Store)},
               -1, {{0}});
-  const ImrTraffic t = simulate_imr_pass(pass, std::vector<TileTrace>(4), {});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), std::vector<TileTrace>(4), {});
   ASSERT_EQ(t.attachments.size(), 1u);
   EXPECT_EQ(t.attachments[0].bytes_written, 256u);
   EXPECT_EQ(t.attachments[0].bytes_read, 0u);
@@ -64,7 +65,7 @@ TEST(ImrModel, SamplesOfAPixelAreAdjacentAndSpanLines) {
   std::vector<TileTrace> traces(1);
   traces[0].fragments = {fragment(0, 1, 0, 0x0F, kColorWritten), fragment(1, 1, 0, 0xF0, kColorWritten),
                          fragment(2, 0, 0, 0x11, kColorWritten | kColorRead)};
-  const ImrTraffic t = simulate_imr_pass(pass, traces, {});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {});
   EXPECT_EQ(t.cache_misses, 4u);
   EXPECT_EQ(t.cache_hits, 2u);
   EXPECT_EQ(t.attachments[0].bytes_read, 4u * 64);     // four fills
@@ -83,7 +84,7 @@ TEST(ImrModel, LeastRecentlyUsedLineIsEvicted) {
   traces[0].fragments = {fragment(0, 0, 0, 1, kDepthWritten), fragment(1, 16, 0, 1, kDepthWritten),
                          fragment(2, 0, 0, 1, kDepthRead), fragment(3, 32, 0, 1, kDepthWritten),
                          fragment(4, 0, 0, 1, kDepthRead), fragment(5, 16, 0, 1, kDepthWritten)};
-  const ImrTraffic t = simulate_imr_pass(pass, traces, {128, 64, 2});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {128, 64, 2});
   EXPECT_EQ(t.cache_hits, 2u);
   EXPECT_EQ(t.cache_misses, 4u);
   EXPECT_EQ(t.attachments[0].bytes_read, 4u * 64);
@@ -99,7 +100,7 @@ TEST(ImrModel, LinesMapToSetsByLineAddressModuloSetCount) {
               0, {{}});
   std::vector<TileTrace> traces(1);
   for (uint32_t i = 0; const int x : {0, 16, 0, 32, 0}) traces[0].fragments.push_back(fragment(i++, x, 0, 1, kDepthRead));
-  const ImrTraffic t = simulate_imr_pass(pass, traces, {128, 64, 1});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {128, 64, 1});
   EXPECT_EQ(t.cache_hits, 1u);
   EXPECT_EQ(t.cache_misses, 4u);
   EXPECT_EQ(t.attachments[0].bytes_read, 4u * 64);
@@ -118,12 +119,12 @@ TEST(ImrModel, ReplaysTrianglesInSubmissionOrderThenTileOrder) {
   traces[0].fragments = {fragment(5, 0, 0, 1, kDepthRead), fragment(5, 1, 0, 1, kDepthRead),
                          fragment(9, 16, 0, 1, kDepthRead)};
   traces[1].fragments = {fragment(5, 16, 0, 1, kDepthRead), fragment(7, 0, 0, 1, kDepthRead)};
-  const ImrTraffic t = simulate_imr_pass(pass, traces, {64, 64, 1});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {64, 64, 1});
   EXPECT_EQ(t.cache_misses, 4u);
   EXPECT_EQ(t.cache_hits, 1u);
 
   traces[1].fragments = {fragment(7, 16, 0, 1, kDepthRead), fragment(5, 0, 0, 1, kDepthRead)};
-  EXPECT_THROW(simulate_imr_pass(pass, traces, {64, 64, 1}), Error);
+  EXPECT_THROW(simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {64, 64, 1}), Error);
 }
 
 TEST(ImrModel, ColourGoesToTheFragmentSubpassOutputsOnly) {
@@ -133,7 +134,7 @@ TEST(ImrModel, ColourGoesToTheFragmentSubpassOutputsOnly) {
   const RenderPassDesc pass = pass_of(4, 4, 1, {c, c, c}, -1, {{0, 1}, {2}});
   std::vector<TileTrace> traces(1);
   traces[0].fragments = {fragment(0, 1, 1, 1, kColorWritten, 0)};
-  ImrTraffic t = simulate_imr_pass(pass, traces, {});
+  ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {});
   for (int a : {0, 1}) {
     EXPECT_EQ(t.attachments[a].bytes_read, 64u) << a;
     EXPECT_EQ(t.attachments[a].bytes_written, 64u) << a;
@@ -143,7 +144,7 @@ TEST(ImrModel, ColourGoesToTheFragmentSubpassOutputsOnly) {
   EXPECT_EQ(t.cache_misses, 2u);
 
   traces[0].fragments.push_back(fragment(1, 2, 2, 1, kColorWritten, 1));
-  t = simulate_imr_pass(pass, traces, {});
+  t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {});
   EXPECT_EQ(t.attachments[2].bytes_read, 64u);
   EXPECT_EQ(t.attachments[2].bytes_written, 64u);
   EXPECT_EQ(t.cache_misses, 3u);
@@ -156,7 +157,7 @@ TEST(ImrModel, ResolveReadsAllSamplesAndWritesOnePerPixel) {
   const RenderPassDesc pass =
       pass_of(4, 4, 4, {attachment(PixelFormat::RGBA8_UNORM, LoadAction::Clear, StoreAction::Resolve)},
               -1, {{0}});
-  const ImrTraffic t = simulate_imr_pass(pass, std::vector<TileTrace>(1), {});
+  const ImrTraffic t = simulate_imr_pass(describe_pass_memory(pass, 16, 16), std::vector<TileTrace>(1), {});
   EXPECT_EQ(t.attachments[0].bytes_read, 256u);
   EXPECT_EQ(t.attachments[0].bytes_written, 256u + 64u);
   EXPECT_EQ(t.attachments[0].bytes_resolved, 64u);
@@ -167,10 +168,10 @@ TEST(ImrModel, RejectsInvalidCacheConfigurations) {
       pass_of(4, 4, 1, {attachment(PixelFormat::RGBA8_UNORM, LoadAction::Clear, StoreAction::Store)},
               -1, {{0}});
   const std::vector<TileTrace> traces(1);
-  EXPECT_THROW(simulate_imr_pass(pass, traces, {1024, 48, 4}), Error);   // line not a power of 2
-  EXPECT_THROW(simulate_imr_pass(pass, traces, {1000, 64, 4}), Error);   // not whole sets
-  EXPECT_THROW(simulate_imr_pass(pass, traces, {1024, 64, 0}), Error);   // no ways
-  EXPECT_NO_THROW(simulate_imr_pass(pass, traces, {192, 64, 1}));        // 3 sets is fine
+  EXPECT_THROW(simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {1024, 48, 4}), Error);   // line not a power of 2
+  EXPECT_THROW(simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {1000, 64, 4}), Error);   // not whole sets
+  EXPECT_THROW(simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {1024, 64, 0}), Error);   // no ways
+  EXPECT_NO_THROW(simulate_imr_pass(describe_pass_memory(pass, 16, 16), traces, {192, 64, 1}));        // 3 sets is fine
 }
 
 // --- Whole passes through the render context ------------------------------------------------

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "raster/texture.h"
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 namespace ontile {
 

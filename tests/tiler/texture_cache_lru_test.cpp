@@ -2,7 +2,7 @@
 // (texture_cache.h: line = granule / (line_bytes / 64), set = line % sets, regions placed in
 // first-use order), for long random and sampler-recorded traces, several textures, set
 // conflicts, non-power-of-two set counts, and the replay at several thread counts.
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 #include <gtest/gtest.h>
 

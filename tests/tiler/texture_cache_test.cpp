@@ -1,7 +1,7 @@
 // Tests for the texture-traffic model: exact hits/misses of the set-associative LRU cache,
 // config validation, the texel addresses Texture2D reports while sampling, and an end-to-end
 // textured full-screen quad whose texture traffic is known exactly at any thread count.
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "support/raster_harness.h"
+#include "support/textured_quad.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -284,69 +285,6 @@ TEST(TextureTrace, SurfaceSnapshotUsesTheTargetsBytesPerTexelAndOneLevel) {
 
 // ---- End to end: a textured full-screen quad ----
 
-// Samples texture unit 0 at the uv in varyings 0-1, nearest, as a real material shader does.
-class TexturedShader final : public FragmentShader {
- public:
-  explicit TexturedShader(std::shared_ptr<const Texture2D> texture) : texture_(std::move(texture)) {
-    sampler_ = sampler_of(FilterMode::Nearest, MipmapMode::None);
-    sampler_.wrap_u = sampler_.wrap_v = WrapMode::ClampToEdge;
-  }
-  void shade(const QuadFragment& q, QuadOutput& out) const override {
-    glm::vec2 uv[kQuadLanes];
-    for (int lane = 0; lane < kQuadLanes; ++lane) uv[lane] = q.var2(0, lane);
-    texture_->sample_quad(sampler_, uv, out.color[0]);
-  }
-
- private:
-  std::shared_ptr<const Texture2D> texture_;
-  SamplerDesc sampler_;
-};
-
-struct TexturedQuadResult {
-  TextureTraffic texture;
-  std::vector<glm::vec4> pixels;
-};
-
-// Draws a size x size quad covering the target with uv 0..1, so pixel (x, y) samples texel
-// (x, y) of a size x size texture: one texel per pixel.
-TexturedQuadResult draw_textured_quad(std::shared_ptr<const Texture2D> texture, int size,
-                                      int threads) {
-  ContextConfig cfg;
-  cfg.threads = threads;
-  cfg.tiler.tile_size_px = 16;
-  RenderContext ctx(cfg);
-  Surface* target = ctx.create_surface("color", PixelFormat::RGBA8_UNORM, size, size);
-  using test::pixel_to_clip;
-  test::ClipSpaceVertexShader vs(
-      {pixel_to_clip(0, 0, size, size), pixel_to_clip(size, 0, size, size),
-       pixel_to_clip(0, size, size, size), pixel_to_clip(size, size, size, size)},
-      {0, 0, 1, 0, 0, 1, 1, 1}, 2);
-  TexturedShader fs(std::move(texture));
-  const std::vector<uint32_t> indices = {0, 1, 2, 2, 1, 3};
-  ctx.begin_render_pass("textured", size, size, 1,
-                        {{"color", PixelFormat::RGBA8_UNORM, LoadAction::DontCare,
-                          StoreAction::Store, glm::vec4(0.0f), target, nullptr}},
-                        -1);
-  ctx.begin_subpass({0});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = indices.data();
-  d.index_count = static_cast<uint32_t>(indices.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  ctx.draw(d);
-  ctx.end_subpass();
-  ctx.end_render_pass();
-  const FrameReport frame = ctx.submit();
-  TexturedQuadResult result;
-  result.texture = frame.passes.at(0).texture;
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) result.pixels.push_back(target->read(x, y));
-  return result;
-}
-
 TEST(TextureTrafficEndToEnd, OneTexelPerPixelFetchesEveryLineExactlyOnce) {
   // A 16x16 tile reads 16 rows x 16 texels = 16 lines (16 RGBA8 texels per 64-byte line, rows
   // 1 KiB apart, texture 4 KiB aligned); no two tiles share a line, and a tile's 16 lines fall
@@ -354,7 +292,7 @@ TEST(TextureTrafficEndToEnd, OneTexelPerPixelFetchesEveryLineExactlyOnce) {
   // every line of level 0 misses exactly once, and every other access hits.
   constexpr int kSize = 256;
   const auto texture = rgba8_texture(kSize, kSize);
-  const TexturedQuadResult one = draw_textured_quad(texture, kSize, 1);
+  const test::TexturedQuadResult one = test::draw_textured_quad(texture, kSize, 1);
   for (int y = 0; y < kSize; y += 17) {
     for (int x = 0; x < kSize; x += 13) {
       const glm::vec4 expected = texture->fetch(0, x, y);  // outside any trace scope
@@ -369,7 +307,7 @@ TEST(TextureTrafficEndToEnd, OneTexelPerPixelFetchesEveryLineExactlyOnce) {
   EXPECT_EQ(one.texture.accesses, 2u * (kSize * kSize / 4 + kSize / 2));
   EXPECT_EQ(one.texture.hits, one.texture.accesses - kSize * kSize * 4 / 64);
   for (int threads : {2, 7}) {
-    const TexturedQuadResult other = draw_textured_quad(texture, kSize, threads);
+    const test::TexturedQuadResult other = test::draw_textured_quad(texture, kSize, threads);
     EXPECT_EQ(other.texture.accesses, one.texture.accesses) << threads << " threads";
     EXPECT_EQ(other.texture.hits, one.texture.hits) << threads << " threads";
     EXPECT_EQ(other.texture.misses, one.texture.misses) << threads << " threads";

@@ -18,7 +18,7 @@
 #include "scene/gltf_loader.h"
 #include "support/generated_scene.h"
 #include "tiler/reference_lru.h"
-#include "tiler/detail/texture_replay_observer.h"
+#include "memory/texture_replay_observer.h"
 
 namespace ontile {
 namespace {

@@ -34,7 +34,7 @@ int thread_count(const ContextConfig& config) {
 
 FrameExecutor::FrameExecutor(const ContextConfig& config, RenderTargetPool& pool)
     : config_(config), pool_(pool), arena_(thread_count(config)),
-      texture_cache_(config.tiler.texture_cache) {
+      memory_(make_memory_model(memory_config_of(config.tiler))) {
   frame_.threads = thread_count(config);
 }
 
@@ -126,7 +126,7 @@ void FrameExecutor::close_pass() {
     }
   }
   arena_.execute([&] {
-    frame_.passes.push_back(execute_render_pass(pass.desc, config_.tiler, texture_cache_));
+    frame_.passes.push_back(execute_render_pass(pass.desc, config_.tiler, *memory_));
   });
   if (config_.pass_observer) {
     config_.pass_observer->pass_executed(frame_.passes.size() - 1, pass.desc, frame_.passes.back());

@@ -60,7 +60,7 @@ class FrameExecutor {
   const ContextConfig& config_;
   RenderTargetPool& pool_;
   tbb::task_arena arena_;
-  TextureCache texture_cache_;  // one cache state per frame
+  std::unique_ptr<MemoryModel> memory_;  // the frame's external memory (one texture cache state)
   FrameReport frame_;
   PropertyBlock globals_;
   CameraMatrices camera_;

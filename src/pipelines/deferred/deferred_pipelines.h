@@ -7,7 +7,7 @@
 //  forward           Forward+ shading with the same lights and BRDF, optionally with MSAA
 //                    resolved on tile or by a separate resolve pass.
 // Options (--set, and --gbuffer/--lights on the CLI): gbuffer=unity|vulkan-samples|
-// vulkan-samples-large, lights=N (generated point lights), tonemap=auto|on|off; subpass only:
+// vulkan-samples-large|bjorge, lights=N (generated point lights), tonemap=auto|on|off; subpass only:
 // transient=on|off, gbuffer_store=dont-care|store (store needs transient=off); forward only: msaa=1|2|4|8, resolve=on-tile|separate.
 #pragma once
 #include "pipelines/kit/pipeline.h"

@@ -1,6 +1,8 @@
 // render_frame (see render_frame.h).
 #include "pipelines/kit/render_frame.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "util/error.h"
 
 namespace ontile {
@@ -23,6 +25,13 @@ FrameInputs frame_inputs(const Scene& scene, const RenderSettings& settings) {
   FrameInputs inputs;
   inputs.scene = &scene;
   inputs.camera = select_camera(scene, settings.camera_index);
+  if (settings.camera_pan_deg_per_frame != 0.0 && settings.frame_index != 0) {
+    const double angle = glm::radians(settings.camera_pan_deg_per_frame * settings.frame_index);
+    const glm::dvec3 position(inputs.camera.world[3]);
+    inputs.camera.world = glm::translate(glm::dmat4(1.0), position) *
+                          glm::rotate(glm::dmat4(1.0), angle, glm::dvec3(0.0, 1.0, 0.0)) *
+                          glm::translate(glm::dmat4(1.0), -position) * inputs.camera.world;
+  }
   inputs.width_px = settings.width_px;
   inputs.height_px = settings.height_px;
   inputs.options = settings.options;

@@ -15,6 +15,11 @@ struct RenderSettings {
   int width_px = 1280, height_px = 720;
   ContextConfig context;
   PipelineOptions options;
+  // A panning camera: frame i sees the selected camera turned i x camera_pan_deg_per_frame
+  // degrees about the world's vertical (+Y) axis through its position. Frames render alike
+  // without it.
+  int frame_index = 0;
+  double camera_pan_deg_per_frame = 0.0;
 };
 
 struct RenderedFrame {

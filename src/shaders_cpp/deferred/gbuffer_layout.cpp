@@ -21,7 +21,9 @@ int GBufferLayout::color_bits_per_px() const {
   return bits;
 }
 
-std::vector<std::string> gbuffer_layout_names() { return {"unity", "vulkan-samples", "vulkan-samples-large"}; }
+std::vector<std::string> gbuffer_layout_names() {
+  return {"unity", "vulkan-samples", "vulkan-samples-large", "bjorge"};
+}
 
 GBufferLayout gbuffer_layout(const std::string& name) {
   GBufferLayout l;
@@ -38,7 +40,14 @@ GBufferLayout gbuffer_layout(const std::string& name) {
     l.normal_format = PixelFormat::RGBA16_FLOAT;
     return l;
   }
-  throw Error("unknown G-buffer layout '" + name + "' (valid: unity, vulkan-samples, vulkan-samples-large)");
+  if (name == "bjorge") {
+    l.light_in_gbuffer = true;
+    l.albedo_format = PixelFormat::RGB10A2_UNORM;
+    l.depth_format = PixelFormat::D24S8;
+    return l;
+  }
+  throw Error("unknown G-buffer layout '" + name +
+              "' (valid: unity, vulkan-samples, vulkan-samples-large, bjorge)");
 }
 
 }  // namespace ontile

@@ -39,6 +39,10 @@ struct GBufferLayout {
 //   (base colour, roughness), normal RGB10A2 (normal, 2-bit metallic), depth D32F: 96 bits.
 // "vulkan-samples-large": the sample's "G-buffer size > 128 bits" setting: albedo and normal
 //   RGBA16F (160 bits).
+// "bjorge": Bjorge, "Bandwidth efficient graphics with ARM Mali GPUs" (GPU Pro 5): RGBA8 sRGB
+//   light (the 32-bit framebuffer, started by the G-buffer pass with ambient and emission, lights
+//   added by blending), albedo RGB10A2 (2-bit roughness in alpha), normal RGB10A2, depth D24S8:
+//   96 colour bits, every target 4 bytes per pixel.
 // Throws ontile::Error naming the valid presets for anything else.
 GBufferLayout gbuffer_layout(const std::string& name);
 std::vector<std::string> gbuffer_layout_names();

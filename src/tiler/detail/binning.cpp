@@ -125,10 +125,21 @@ class RecordSlot {
   bool open_ = false;
 };
 
+// Post-transform vertex bytes: positions for every vertex, varyings for every vertex without
+// IDVS and, with it, only for those a binned record references (parameter_buffer.h).
+void add_vertex_bytes(GeometryCounters& c, uint64_t vertices, uint64_t varying_vertices,
+                      uint64_t varying_bytes_per_vertex) {
+  const uint64_t positions = uint64_t{kPositionBytes} * vertices;
+  const uint64_t varyings = varying_bytes_per_vertex * varying_vertices;
+  c.parameter_position_bytes_written += positions;
+  c.parameter_varying_bytes_written += varyings;
+  c.parameter_bytes_written += positions + varyings;
+}
+
 void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& grid,
-                   const GuardBand& guard, Chunk& chunk) {
+                   const GuardBand& guard, const VertexOutputModel& model, Chunk& chunk) {
   const int n = shaded.varying_count;
-  const uint32_t vertex_bytes = post_transform_vertex_bytes(n);
+  const uint64_t varying_bytes = uint64_t{model.varying_component_bytes} * static_cast<uint64_t>(n);
   GeometryCounters& c = chunk.counters;
   chunk.triangles.reserve(chunk.triangle_count);
   chunk.varyings.reserve(static_cast<size_t>(chunk.triangle_count) * 3 * n);
@@ -166,6 +177,9 @@ void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& gri
                                                    record.setup());
       if (r == SetupResult::Ok) {
         record.emit(var, ids, n, primitive_id, grid, tiles);
+        if (model.idvs) {
+          for (int k = 0; k < 3; ++k) shaded.varyings_written[ids[k]].store(1, std::memory_order_relaxed);
+        }
       } else if (r == SetupResult::Culled) {
         ++c.triangles_culled;
       } else if (r == SetupResult::ZeroArea) {
@@ -183,8 +197,8 @@ void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& gri
     }
     // Clipped: the polygon's vertices are new post-transform vertices; draw it as a fan.
     ++c.triangles_clipped;
-    c.parameter_bytes_written += uint64_t{vertex_bytes} * polygon.count;
     bool any_emitted = false, any_culled = false;
+    uint32_t emitted_vertices = 0;  // bit i: polygon vertex i is in an emitted fan triangle
     for (int i = 1; i + 1 < polygon.count; ++i) {
       const glm::vec4 fan_pos[3] = {polygon.position[0], polygon.position[i],
                                     polygon.position[i + 1]};
@@ -199,9 +213,14 @@ void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& gri
                                      base + static_cast<uint32_t>(i + 1)};
         record.emit(fan_var, fan_ids, n, primitive_id, grid, tiles);
         any_emitted = true;
+        emitted_vertices |= 1u | (1u << i) | (1u << (i + 1));
       }
       any_culled = any_culled || r == SetupResult::Culled;
     }
+    add_vertex_bytes(c, static_cast<uint64_t>(polygon.count),
+                     model.idvs ? static_cast<uint64_t>(std::popcount(emitted_vertices))
+                                : static_cast<uint64_t>(polygon.count),
+                     varying_bytes);
     chunk.clipped_vertices += static_cast<uint32_t>(polygon.count);
     if (!any_emitted) ++(any_culled ? c.triangles_culled : c.triangles_outside);
   }
@@ -214,9 +233,11 @@ void process_chunk(const DrawCall& draw, ShadedDraw& shaded, const TileGrid& gri
 
 }  // namespace
 
-ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) {
+ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid,
+                              const VertexOutputModel& vertex_output) {
   ParameterBuffer pb;
   pb.grid = grid;
+  pb.vertex_output = vertex_output;
   const GuardBand guard = GuardBand::for_viewport(grid.width_px, grid.height_px);
 
   // Vertex shading and per-draw fetch traffic.
@@ -232,7 +253,7 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
         throw Error("pass '" + pass.name + "': draw with " + std::to_string(draw.index_count) +
                     " indices (not a multiple of 3)");
       }
-      shaded[s].push_back(shade_draw(draw, grid, guard, pb.counters));
+      shaded[s].push_back(shade_draw(draw, grid, guard, pb.counters, vertex_output.idvs));
       pb.counters.index_bytes_read += uint64_t{draw.index_bytes} * draw.index_count;
       const uint32_t triangles = draw.index_count / 3;
       for (uint32_t first = 0; first < triangles; first += kTrianglesPerChunk) {
@@ -255,15 +276,18 @@ ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid) 
   ontile::parallel_for(size_t{0}, chunks.size(), [&](size_t i) {
     Chunk& c = chunks[i];
     process_chunk(pass.subpasses[c.subpass].draws[c.draw], shaded[c.subpass][c.draw], grid, guard,
-                  c);
+                  vertex_output, c);
   });
   // Fetch traffic of the unique vertices each draw's indices referenced.
   for (uint32_t s = 0; s < pass.subpasses.size(); ++s) {
     for (uint32_t d = 0; d < pass.subpasses[s].draws.size(); ++d) {
-      const uint64_t unique = count_referenced_vertices(shaded[s][d]);
+      const ShadedDraw& draw = shaded[s][d];
+      const uint64_t unique = count_referenced_vertices(draw);
       pb.counters.vertex_bytes_read += unique * pass.subpasses[s].draws[d].input_vertex_bytes;
-      pb.counters.parameter_bytes_written +=
-          unique * post_transform_vertex_bytes(shaded[s][d].varying_count);
+      add_vertex_bytes(pb.counters, unique,
+                       vertex_output.idvs ? count_varying_vertices(draw) : unique,
+                       uint64_t{vertex_output.varying_component_bytes} *
+                           static_cast<uint64_t>(draw.varying_count));
     }
   }
   shaded.clear();

@@ -39,9 +39,20 @@ struct TileGrid {
 constexpr uint32_t kPositionBytes = 16;         // post-transform x, y, z, w as float32
 constexpr uint32_t kPrimitiveRecordBytes = 12;  // three 32-bit vertex references
 constexpr uint32_t kTileListEntryBytes = 4;     // one 32-bit primitive reference per tile
-inline uint32_t post_transform_vertex_bytes(int varying_count) {
-  return kPositionBytes + 4u * static_cast<uint32_t>(varying_count);
+// varying_component_bytes: 4 for fp32 varyings, 2 for fp16 (TilerConfig::varying_precision).
+inline uint32_t post_transform_vertex_bytes(int varying_count, uint32_t varying_component_bytes = 4) {
+  return kPositionBytes + varying_component_bytes * static_cast<uint32_t>(varying_count);
 }
+
+// How binning writes post-transform vertices (TilerConfig::idvs and varying_precision). With
+// index-driven vertex shading (Mali Bifrost/Valhall) positions are written for every vertex the
+// indices reference, varyings only for the vertices a binned triangle record references; without
+// it every referenced vertex is written whole. Varyings are stored at varying_component_bytes
+// each; ontile still interpolates them in fp32 (the model prices storage, not precision).
+struct VertexOutputModel {
+  bool idvs = false;
+  uint32_t varying_component_bytes = 4;
+};
 
 // The triangles set up from one run of consecutive input triangles of a draw. Binning works
 // chunk by chunk in parallel and the chunks stay where they were built (no merge copy).
@@ -64,6 +75,7 @@ struct ParameterBuffer {
   std::vector<uint32_t> tile_offsets;  // tile_count + 1 entries
   UninitializedVector<uint32_t> tile_entries;  // triangle references, per tile in submission order
   GeometryCounters counters;
+  VertexOutputModel vertex_output;
 
   const BinnedTriangle& triangle(uint32_t ref) const {
     return chunks[ref >> kChunkLocalBits].triangles[ref & ((1u << kChunkLocalBits) - 1)];
@@ -76,6 +88,7 @@ struct ParameterBuffer {
 // Runs the geometry phase of a pass: vertex shading, primitive assembly, NaN/Inf rejection,
 // clipping, setup, culling and binning into the tiles whose area each triangle's edges touch.
 // Runs in parallel on the current oneTBB arena; the result does not depend on thread count.
-ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid);
+ParameterBuffer bin_triangles(const RenderPassDesc& pass, const TileGrid& grid,
+                              const VertexOutputModel& vertex_output = {});
 
 }  // namespace ontile

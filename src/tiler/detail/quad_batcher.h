@@ -14,7 +14,7 @@
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/detail/tile_load_store.h"
 #include "tiler/detail/tile_memory.h"
-#include "tiler/detail/tile_trace.h"
+#include "memory/tile_trace.h"
 
 namespace ontile {
 

@@ -305,8 +305,9 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  std::vector<uint64_t>& texel_buffer, MemoryModel& external,
                   bool hierarchical_z) {
+  const bool record_fragment_accesses = external.records_fragments();
   trace.texture_granules = GranuleRange{&texel_buffer, texel_buffer.size(), texel_buffer.size()};
   const TexelTraceScope texel_trace(&texel_buffer);
   const TileGrid& grid = params.grid;
@@ -317,6 +318,7 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   rect.height = std::min(grid.tile_height_px, grid.height_px - rect.y0);
 
   load_tile(pass, rect, memory);
+  external.tile_loaded(tile_index, rect);
   const uint32_t begin = params.tile_offsets[tile_index];
   const uint32_t end = params.tile_offsets[tile_index + 1];
   if (begin != end) ++counters.tiles_executed;
@@ -342,8 +344,9 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
     const SubpassDesc& subpass = pass.subpasses[tri.subpass];
     const DrawCall& draw = subpass.draws[tri.draw];
     const int n = draw.vertex_shader->varying_count();
-    counters.parameter_bytes_read += kTileListEntryBytes + kPrimitiveRecordBytes +
-                                     3u * post_transform_vertex_bytes(n);
+    counters.parameter_bytes_read +=
+        kTileListEntryBytes + kPrimitiveRecordBytes +
+        3u * post_transform_vertex_bytes(n, params.vertex_output.varying_component_bytes);
     TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
                               rect, &scratch.fetches[tri.subpass], ref,
                               record_fragment_accesses ? &trace.fragments : nullptr);
@@ -366,6 +369,7 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   }
   scratch.batcher.flush();
   store_tile(pass, rect, memory);
+  external.tile_stored(tile_index, rect);
   trace.texture_granules.end = texel_buffer.size();
 }
 

@@ -4,21 +4,22 @@
 #include <cstdint>
 #include <vector>
 
+#include "memory/memory_model.h"
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/render_pass.h"
 #include "tiler/detail/tile_memory.h"
-#include "tiler/detail/tile_trace.h"
+#include "memory/tile_trace.h"
 
 namespace ontile {
 
 // Texture fetches are traced: appended to texel_buffer (the running thread's, shared with its
-// other tiles), and trace.texture_granules names the part this tile appended. With
-// record_fragment_accesses every fragment's colour/depth accesses go to trace.fragments (for
-// the IMR model). hierarchical_z lets early-Z draws skip cells proven occluded (same results,
-// less work).
+// other tiles), and trace.texture_granules names the part this tile appended. The external
+// memory model hears of the tile's loads and stores, and when it records fragments every
+// fragment's colour/depth accesses go to trace.fragments. hierarchical_z lets early-Z draws skip
+// cells proven occluded (same results, less work).
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  std::vector<uint64_t>& texel_buffer, bool record_fragment_accesses,
+                  std::vector<uint64_t>& texel_buffer, MemoryModel& external,
                   bool hierarchical_z = true);
 
 // Whole covered quad rows (both pixel rows of a cell's quad row covered and passing at one

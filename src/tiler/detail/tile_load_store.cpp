@@ -1,5 +1,5 @@
-// Tile load and store (see tile_load_store.h). Byte counting is done analytically by the pass
-// executor; this file moves the data. A tile row (its pixels, samples adjacent) is contiguous in
+// Tile load and store (see tile_load_store.h). The memory model (memory/memory_model.h) prices
+// what moves; this file moves the data. A tile row (its pixels, samples adjacent) is contiguous in
 // tile memory and in the surface, so loads and stores convert whole rows (pixel_format.h row
 // functions, SIMD for the hot formats) and clears are fills of one quantised value.
 #include "tiler/detail/tile_load_store.h"

@@ -18,7 +18,7 @@ constexpr uint32_t kVertexGrain = 2048;
 }  // namespace
 
 ShadedDraw shade_draw(const DrawCall& draw, const TileGrid& grid, const GuardBand& guard,
-                      GeometryCounters& counters) {
+                      GeometryCounters& counters, bool idvs) {
   ShadedDraw shaded;
   shaded.varying_count = draw.vertex_shader->varying_count();
   if (shaded.varying_count < 0 || shaded.varying_count > kMaxVaryings) {
@@ -32,6 +32,7 @@ ShadedDraw shade_draw(const DrawCall& draw, const TileGrid& grid, const GuardBan
   shaded.outcode.resize(draw.vertex_count);
   shaded.snapped.resize(draw.vertex_count);
   shaded.referenced = std::vector<std::atomic<uint8_t>>(draw.vertex_count);  // all 0
+  if (idvs) shaded.varyings_written = std::vector<std::atomic<uint8_t>>(draw.vertex_count);
   std::atomic<uint64_t> sanitized{0};
   ontile::parallel_for(tbb::blocked_range<uint32_t>(0, draw.vertex_count, kVertexGrain),
                     [&](const tbb::blocked_range<uint32_t>& r) {
@@ -58,6 +59,12 @@ uint64_t count_referenced_vertices(const ShadedDraw& shaded) {
   uint64_t unique = 0;
   for (const std::atomic<uint8_t>& r : shaded.referenced) unique += r.load(std::memory_order_relaxed);
   return unique;
+}
+
+uint64_t count_varying_vertices(const ShadedDraw& shaded) {
+  uint64_t written = 0;
+  for (const std::atomic<uint8_t>& w : shaded.varyings_written) written += w.load(std::memory_order_relaxed);
+  return written;
 }
 
 }  // namespace ontile

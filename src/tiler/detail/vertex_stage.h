@@ -26,14 +26,20 @@ struct ShadedDraw {
   // Set to 1 by primitive assembly for every vertex an index references (chunks of the draw
   // assemble in parallel, hence atomics): the vertices a vertex fetch reads from memory.
   std::vector<std::atomic<uint8_t>> referenced;
+  // With index-driven vertex shading only (else empty): set to 1 for every vertex a binned
+  // triangle record references, the vertices whose varyings the parameter buffer holds.
+  std::vector<std::atomic<uint8_t>> varyings_written;
 };
 
 // Shades every vertex of the draw in parallel on the current oneTBB arena and classifies and
-// snaps it for `grid`; adds vertices_shaded and varyings_sanitized to `counters`.
+// snaps it for `grid`; adds vertices_shaded and varyings_sanitized to `counters`. `idvs` sizes
+// varyings_written.
 ShadedDraw shade_draw(const DrawCall& draw, const TileGrid& grid, const GuardBand& guard,
-                      GeometryCounters& counters);
+                      GeometryCounters& counters, bool idvs = false);
 
 // Vertices marked in `referenced`: the unique vertices the draw's indices reference.
 uint64_t count_referenced_vertices(const ShadedDraw& shaded);
+// Vertices marked in `varyings_written`.
+uint64_t count_varying_vertices(const ShadedDraw& shaded);
 
 }  // namespace ontile

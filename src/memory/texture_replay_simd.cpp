@@ -4,11 +4,11 @@
 // first lane that is not, that one granule takes the per-access path and the vectors resume after
 // it. Integer operations only: every target gives the counts of the per-access loop.
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "tiler/detail/texture_replay_simd.cpp"
+#define HWY_TARGET_INCLUDE "memory/texture_replay_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "tiler/detail/texture_replay_kernel.h"
+#include "memory/texture_replay_kernel.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 namespace ontile {
 

@@ -1,5 +1,5 @@
-// Parameter-buffer read cache model (see parameter_cache.h).
-#include "tiler/detail/parameter_cache.h"
+// The parameter buffer's reads in tile order (see parameter_reads.h).
+#include "tiler/detail/parameter_reads.h"
 
 #include <vector>
 
@@ -12,9 +12,8 @@ uint64_t align_up(uint64_t bytes) { return (bytes + kLineBytes - 1) / kLineBytes
 
 }  // namespace
 
-TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const RenderPassDesc& pass,
-                                      const ParameterCacheConfig& config) {
-  TextureCache cache(TextureCacheConfig{config.size_bytes, static_cast<uint32_t>(kLineBytes), config.ways});
+void replay_parameter_reads(const ParameterBuffer& params, const RenderPassDesc& pass, MemoryModel& memory) {
+  const uint32_t component_bytes = params.vertex_output.varying_component_bytes;
   // Where each draw's post-transform vertices and each chunk's clipped vertices start, after
   // the tile lists and primitive records.
   uint64_t triangle_total = 0;
@@ -29,7 +28,7 @@ TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const Rende
   for (size_t s = 0; s < pass.subpasses.size(); ++s) {
     for (const DrawCall& d : pass.subpasses[s].draws) {
       draw_vertex_base[s].push_back(next);
-      next = align_up(next + uint64_t{d.vertex_count} * post_transform_vertex_bytes(d.vertex_shader->varying_count()));
+      next = align_up(next + uint64_t{d.vertex_count} * post_transform_vertex_bytes(d.vertex_shader->varying_count(), component_bytes));
     }
   }
   std::vector<uint64_t> clipped_base(params.chunks.size(), 0);
@@ -38,27 +37,17 @@ TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const Rende
     const BinnedTriangle& t = params.chunks[c].triangles.front();  // a chunk holds one draw
     clipped_base[c] = next;
     const int n = pass.subpasses[t.subpass].draws[t.draw].vertex_shader->varying_count();
-    next = align_up(next + uint64_t{params.chunks[c].clipped_vertices} * post_transform_vertex_bytes(n));
+    next = align_up(next + uint64_t{params.chunks[c].clipped_vertices} * post_transform_vertex_bytes(n, component_bytes));
   }
 
-  TextureTraffic traffic;
-  auto read = [&](uint64_t address, uint64_t bytes) {
-    for (uint64_t g = address / kLineBytes; g <= (address + bytes - 1) / kLineBytes; ++g) {
-      ++traffic.accesses;
-      if (cache.access(g)) {
-        ++traffic.hits;
-      } else {
-        ++traffic.misses;
-      }
-    }
-  };
+  const auto read = [&](uint64_t address, uint64_t bytes) { memory.parameter_read(address, bytes); };
   const int tiles = params.grid.tile_count();
   for (int tile = 0; tile < tiles; ++tile) {
     for (uint32_t e = params.tile_offsets[tile]; e < params.tile_offsets[tile + 1]; ++e) {
       const uint32_t ref = params.tile_entries[e];
       const uint32_t chunk = ref >> kChunkLocalBits, local = ref & ((1u << kChunkLocalBits) - 1);
       const BinnedTriangle& t = params.chunks[chunk].triangles[local];
-      const uint64_t stride = post_transform_vertex_bytes(pass.subpasses[t.subpass].draws[t.draw].vertex_shader->varying_count());
+      const uint64_t stride = post_transform_vertex_bytes(pass.subpasses[t.subpass].draws[t.draw].vertex_shader->varying_count(), component_bytes);
       read(uint64_t{kTileListEntryBytes} * e, kTileListEntryBytes);
       read(records_base + uint64_t{kPrimitiveRecordBytes} * (first_triangle[chunk] + local), kPrimitiveRecordBytes);
       for (const uint32_t v : t.vertex) {
@@ -67,8 +56,6 @@ TextureTraffic replay_parameter_reads(const ParameterBuffer& params, const Rende
       }
     }
   }
-  traffic.bytes_read = traffic.misses * kLineBytes;
-  return traffic;
 }
 
 }  // namespace ontile

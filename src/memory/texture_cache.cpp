@@ -1,6 +1,6 @@
 // The texture cache model (see texture_cache.h): config validation and the placement of texture
 // regions in the frame's address space.
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 #include "raster/texture.h"
 
@@ -17,9 +17,8 @@ namespace {
 // The trace records 64-byte granules (raster/texel_trace.h), so a line holds a whole number
 // of them.
 constexpr uint32_t kGranuleBytes = 64;
-constexpr uint64_t kEmptyWay = ~uint64_t{0};
 
-void validate(const TextureCacheConfig& config) {
+const TextureCacheConfig& validated(const TextureCacheConfig& config) {
   const std::string where = "texture cache config: ";
   if (config.line_bytes < kGranuleBytes || !std::has_single_bit(config.line_bytes)) {
     throw Error(where + "line_bytes " + std::to_string(config.line_bytes) +
@@ -32,28 +31,15 @@ void validate(const TextureCacheConfig& config) {
                 " must be a positive multiple of line_bytes x ways (" +
                 std::to_string(set_bytes) + ")");
   }
+  return config;
 }
 
 }  // namespace
 
-void TextureTraffic::add(const TextureTraffic& o) {
-  accesses += o.accesses;
-  hits += o.hits;
-  misses += o.misses;
-  bytes_read += o.bytes_read;
-}
-
-TextureCache::TextureCache(const TextureCacheConfig& config) : config_(config) {
-  validate(config_);
-  const auto sets =
-      static_cast<uint32_t>(config_.size_bytes / (uint64_t{config_.line_bytes} * config_.ways));
-  tags_.assign(static_cast<size_t>(sets) * config_.ways, kEmptyWay);
-  sets_.tags = tags_.data();
-  sets_.ways = config_.ways;
-  sets_.sets = sets;
-  sets_.line_shift = std::countr_zero(config_.line_bytes / kGranuleBytes);
-  sets_.sets_are_power_of_two = std::has_single_bit(sets);
-}
+TextureCache::TextureCache(const TextureCacheConfig& config)
+    : config_(validated(config)),
+      cache_(static_cast<uint32_t>(config.size_bytes / (uint64_t{config.line_bytes} * config.ways)),
+             config.ways, std::countr_zero(config.line_bytes / kGranuleBytes)) {}
 
 uint64_t TextureCache::frame_base_granule(uint64_t id) {
   auto it = frame_base_granule_.find(id);

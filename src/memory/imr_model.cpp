@@ -31,7 +31,7 @@
 //   memory (width * height * samples * bytes_per_pixel) and writes the resolved pixels
 //   (width * height * bytes_per_pixel), bypassing the render-target cache; both count to the
 //   attachment (the write also in bytes_resolved).
-#include "tiler/detail/imr_model.h"
+#include "memory/imr_model.h"
 
 #include <bit>
 #include <functional>
@@ -39,6 +39,7 @@
 #include <string>
 #include <utility>
 
+#include "memory/set_associative_cache.h"
 #include "util/error.h"
 
 namespace ontile {
@@ -58,67 +59,35 @@ void validate_config(const RenderTargetCacheConfig& c) {
   }
 }
 
-// Set-associative write-back cache; lines remember their attachment so write-backs are
-// charged to it.
+// The render-target cache: the shared set-associative cache, its lines owned by attachments so
+// write-backs are charged to them.
 class RenderTargetCache {
  public:
   RenderTargetCache(const RenderTargetCacheConfig& config, ImrTraffic& traffic)
       : line_bytes_(config.line_bytes),
-        ways_(config.ways),
-        sets_(config.size_bytes / (uint64_t{config.line_bytes} * config.ways)),
-        lines_(sets_ * ways_),
+        cache_(static_cast<uint32_t>(config.size_bytes / (uint64_t{config.line_bytes} * config.ways)),
+               config.ways, 0),
         traffic_(traffic) {}
 
   void access(uint64_t line_address, int attachment, bool write) {
-    ++clock_;
-    Line* set = &lines_[(line_address % sets_) * ways_];
-    Line* victim = set;
-    for (uint32_t w = 0; w < ways_; ++w) {
-      Line& line = set[w];
-      if (line.valid && line.address == line_address) {
-        ++traffic_.cache_hits;
-        line.last_use = clock_;
-        line.dirty = line.dirty || write;
-        return;
-      }
-      // Prefer an empty way, else the least recently used one (first in way order on ties,
-      // which only empty ways can have).
-      if (!victim->valid) continue;
-      if (!line.valid || line.last_use < victim->last_use) victim = &line;
+    SetAssociativeCache::WriteBack evicted;
+    if (cache_.access_line_write_back(line_address, static_cast<uint32_t>(attachment), write, evicted)) {
+      ++traffic_.cache_hits;
+      return;
     }
     ++traffic_.cache_misses;
-    write_back(*victim);
+    if (evicted.happened) traffic_.attachments[evicted.owner].bytes_written += line_bytes_;
     // Write-allocate with fill: the whole line is read, also for a write (see the rules above).
     traffic_.attachments[attachment].bytes_read += line_bytes_;
-    *victim = Line{line_address, clock_, attachment, true, write};
   }
 
   void flush() {
-    for (Line& line : lines_) {
-      write_back(line);
-      line.valid = false;
-    }
+    cache_.flush([&](uint32_t owner) { traffic_.attachments[owner].bytes_written += line_bytes_; });
   }
 
  private:
-  struct Line {
-    uint64_t address = 0;  // byte address / line size
-    uint64_t last_use = 0;
-    int attachment = -1;
-    bool valid = false;
-    bool dirty = false;
-  };
-
-  void write_back(Line& line) {
-    if (line.valid && line.dirty) traffic_.attachments[line.attachment].bytes_written += line_bytes_;
-    line.dirty = false;
-  }
-
   uint64_t line_bytes_;
-  uint32_t ways_;
-  uint64_t sets_;
-  std::vector<Line> lines_;
-  uint64_t clock_ = 0;
+  SetAssociativeCache cache_;
   ImrTraffic& traffic_;
 };
 
@@ -129,11 +98,11 @@ struct AttachmentLayout {
 
 class FragmentReplay {
  public:
-  FragmentReplay(const RenderPassDesc& pass, const RenderTargetCacheConfig& config,
+  FragmentReplay(const PassMemoryDesc& pass, const RenderTargetCacheConfig& config,
                  ImrTraffic& traffic)
       : pass_(pass), line_bytes_(config.line_bytes), cache_(config, traffic) {
     uint64_t next_base = 0;
-    for (const AttachmentDesc& d : pass.attachments) {
+    for (const AttachmentMemory& d : pass.attachments) {
       AttachmentLayout layout;
       layout.base_bytes = next_base;
       layout.sample_bytes = static_cast<uint64_t>(bytes_per_pixel(d.format));
@@ -145,7 +114,7 @@ class FragmentReplay {
 
   void replay(const FragmentAccess& f) {
     if (f.x_px >= pass_.width_px || f.y_px >= pass_.height_px ||
-        f.subpass >= pass_.subpasses.size()) {
+        f.subpass >= pass_.subpass_color_outputs.size()) {
       throw Error("IMR model, pass '" + pass_.name + "': fragment at (" + std::to_string(f.x_px) +
                   ", " + std::to_string(f.y_px) + ") of subpass " + std::to_string(f.subpass) +
                   " lies outside the pass");
@@ -154,7 +123,7 @@ class FragmentReplay {
     if (depth >= 0 && (f.flags & kDepthRead)) touch(depth, f, f.covered_samples, false);
     if (depth >= 0 && (f.flags & kDepthWritten)) touch(depth, f, f.written_samples, true);
     if (f.flags & kColorWritten) {
-      for (int a : pass_.subpasses[f.subpass].color_outputs) {
+      for (int a : pass_.subpass_color_outputs[f.subpass]) {
         if (f.flags & kColorRead) touch(a, f, f.written_samples, false);
         touch(a, f, f.written_samples, true);
       }
@@ -184,7 +153,7 @@ class FragmentReplay {
     }
   }
 
-  const RenderPassDesc& pass_;
+  const PassMemoryDesc& pass_;
   uint64_t line_bytes_;
   std::vector<AttachmentLayout> layouts_;
   RenderTargetCache cache_;
@@ -193,7 +162,7 @@ class FragmentReplay {
 // k-way merge of the tiles' fragment lists by (triangle_ref, tile index); each pop hands over
 // the whole run of one triangle's fragments in one tile.
 template <typename Visit>
-void merge_in_submission_order(const RenderPassDesc& pass, const std::vector<TileTrace>& traces,
+void merge_in_submission_order(const PassMemoryDesc& pass, const std::vector<TileTrace>& traces,
                                Visit&& visit) {
   using Key = std::pair<uint32_t, size_t>;  // (triangle_ref, tile)
   std::priority_queue<Key, std::vector<Key>, std::greater<Key>> heads;
@@ -219,11 +188,11 @@ void merge_in_submission_order(const RenderPassDesc& pass, const std::vector<Til
 
 }  // namespace
 
-ImrTraffic simulate_imr_pass(const RenderPassDesc& pass, const std::vector<TileTrace>& traces,
+ImrTraffic simulate_imr_pass(const PassMemoryDesc& pass, const std::vector<TileTrace>& traces,
                              const RenderTargetCacheConfig& config) {
   validate_config(config);
-  if (pass.subpasses.size() > 256) {
-    throw Error("IMR model, pass '" + pass.name + "': " + std::to_string(pass.subpasses.size()) +
+  if (pass.subpass_color_outputs.size() > 256) {
+    throw Error("IMR model, pass '" + pass.name + "': " + std::to_string(pass.subpass_color_outputs.size()) +
                 " subpasses (fragment records hold at most 256)");
   }
   ImrTraffic traffic;
@@ -231,8 +200,8 @@ ImrTraffic simulate_imr_pass(const RenderPassDesc& pass, const std::vector<TileT
   const uint64_t pixels = uint64_t(pass.width_px) * pass.height_px;
 
   for (size_t a = 0; a < pass.attachments.size(); ++a) {
-    const AttachmentDesc& d = pass.attachments[a];
-    if (d.load == LoadAction::Clear) {
+    const AttachmentMemory& d = pass.attachments[a];
+    if (d.clears) {
       traffic.attachments[a].bytes_written += pixels * pass.samples * bytes_per_pixel(d.format);
     }
   }
@@ -242,8 +211,8 @@ ImrTraffic simulate_imr_pass(const RenderPassDesc& pass, const std::vector<TileT
   replay.flush();
 
   for (size_t a = 0; a < pass.attachments.size(); ++a) {
-    const AttachmentDesc& d = pass.attachments[a];
-    if (d.store != StoreAction::Resolve && d.store != StoreAction::StoreAndResolve) continue;
+    const AttachmentMemory& d = pass.attachments[a];
+    if (!d.resolves) continue;
     const uint64_t pixel_bytes = pixels * bytes_per_pixel(d.format);
     ImrAttachmentTraffic& t = traffic.attachments[a];
     t.bytes_read += pixel_bytes * pass.samples;

@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "tiler/render_pass.h"
-#include "tiler/detail/tile_trace.h"
+#include "memory/pass_memory.h"
+#include "memory/tile_trace.h"
 
 namespace ontile {
 
-// Set-associative, write-back, write-allocate cache with LRU replacement. line_bytes must be a
-// power of two and size_bytes a multiple of line_bytes * ways (sets = size / (line * ways)).
+// Set-associative, write-back, write-allocate cache with LRU replacement (the shared
+// SetAssociativeCache, set_associative_cache.h). line_bytes must be a power of two and size_bytes a multiple of line_bytes * ways (sets = size / (line * ways)).
 struct RenderTargetCacheConfig {
   uint32_t size_bytes = 128 * 1024;
   uint32_t line_bytes = 64;
@@ -35,7 +35,7 @@ struct ImrTraffic {
 // each tile's fragments in submission order). The cache starts empty for every pass. The rules
 // (surface layout, load/store/resolve actions, access order) are documented in imr_model.cpp.
 // Throws ontile::Error for an invalid cache configuration or inconsistent traces.
-ImrTraffic simulate_imr_pass(const RenderPassDesc& pass, const std::vector<TileTrace>& traces,
+ImrTraffic simulate_imr_pass(const PassMemoryDesc& pass, const std::vector<TileTrace>& traces,
                              const RenderTargetCacheConfig& config);
 
 }  // namespace ontile

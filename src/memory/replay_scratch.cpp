@@ -1,5 +1,5 @@
 // The texture replay's pooled working memory (see replay_scratch.h).
-#include "tiler/detail/replay_scratch.h"
+#include "memory/replay_scratch.h"
 
 #include <algorithm>
 #include <cstring>

@@ -4,7 +4,7 @@
 #pragma once
 #include <vector>
 
-#include "tiler/detail/texture_cache.h"
+#include "memory/texture_cache.h"
 
 namespace ontile {
 

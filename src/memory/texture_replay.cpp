@@ -21,10 +21,10 @@
 
 #include <tbb/task_arena.h>
 
-#include "tiler/detail/replay_scratch.h"
-#include "tiler/detail/texture_cache.h"
-#include "tiler/detail/texture_replay_kernel.h"
-#include "tiler/detail/texture_replay_observer.h"
+#include "memory/replay_scratch.h"
+#include "memory/texture_cache.h"
+#include "memory/texture_replay_kernel.h"
+#include "memory/texture_replay_observer.h"
 #include "util/parallel_for.h"
 
 namespace ontile {

@@ -1,0 +1,34 @@
+// Transaction elimination's CRC history (see transaction_elimination.h). The CRC is zlib's
+// crc32 (a well-kept library; the hardware's CRC polynomial is not published, and any CRC makes
+// the same decisions unless two different tiles collide).
+#include "memory/transaction_elimination.h"
+
+#include <zlib.h>
+
+namespace ontile {
+
+TileSignatureHistory::Table& TileSignatureHistory::table(const std::string& key, int tiles) {
+  Table& t = tables_[key];
+  if (t.crc.size() != static_cast<size_t>(tiles)) {
+    t.crc.assign(static_cast<size_t>(tiles), 0);
+    t.valid.assign(static_cast<size_t>(tiles), 0);
+  }
+  return t;
+}
+
+uint32_t tile_crc(const SurfaceBytes& surface, const TileRect& rect) {
+  uLong crc = crc32(0L, Z_NULL, 0);
+  const auto row_bytes =
+      static_cast<uInt>(static_cast<size_t>(rect.width) * surface.samples * bytes_per_pixel(surface.format));
+  for (int y = rect.y0; y < rect.y0 + rect.height; ++y) crc = crc32(crc, surface.pixel(rect.x0, y), row_bytes);
+  return static_cast<uint32_t>(crc);
+}
+
+bool eliminate_tile_write(TileSignatureHistory::Table& table, int tile, uint32_t crc) {
+  const bool same = table.valid[tile] && table.crc[tile] == crc;
+  table.crc[tile] = crc;
+  table.valid[tile] = 1;
+  return same;
+}
+
+}  // namespace ontile
