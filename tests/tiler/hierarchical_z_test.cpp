@@ -22,7 +22,7 @@ FrameReport draw_two_layers(float z_first, float z_second, bool hierarchical_z, 
   for (float z : {z_first, z_second}) {
     for (const glm::vec2 p : {glm::vec2(-1, -1), glm::vec2(3, -1), glm::vec2(-1, 3)}) {
       pos.emplace_back(p.x, p.y, z, 1.0f);
-      var.push_back(z);
+      var.insert(var.end(), {z, 0.0f, 0.0f, 0.0f});  // VaryingsShader reads varyings 0-3
     }
   }
   const std::vector<uint32_t> idx = {0, 1, 2, 3, 4, 5};
@@ -31,7 +31,7 @@ FrameReport draw_two_layers(float z_first, float z_second, bool hierarchical_z, 
   cfg.tiler.hierarchical_z = hierarchical_z;
   RenderContext ctx(cfg);
   Surface* color = ctx.create_surface("c", PixelFormat::R32_FLOAT, kW, kH);
-  ClipSpaceVertexShader vs(pos, var, 1);
+  ClipSpaceVertexShader vs(pos, var, 4);
   test::VaryingsShader fs;
   ctx.begin_render_pass("layers", kW, kH, 1,
                         {{"c", PixelFormat::R32_FLOAT, LoadAction::Clear, StoreAction::Store, glm::vec4(0.0f), color, nullptr},
