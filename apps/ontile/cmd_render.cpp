@@ -166,7 +166,7 @@ void apply_gpu_option(const RenderOptions& o, TilerConfig& tiler) {
   const bool sixteen = tiler.tile_size_px == kTransactionEliminationTilePx &&
                        (tiler.tile_size_rule == TileSizeRule::Budget || tiler.tile_size_rule == TileSizeRule::Panfrost);
   if (tiler.transaction_elimination && !sixteen) {
-    throw UsageError("--transaction-elimination on needs 16x16 tiles (CRCs per 16x16 tile, as panfrost), but the "
+    throw UsageError("--transaction-elimination needs 16x16 tiles (CRCs per 16x16 tile, as panfrost), but the "
                      "tiles are " + (tiler.tile_size_rule == TileSizeRule::Budget
                                          ? std::to_string(tiler.tile_size_px) + "x" + std::to_string(tiler.tile_size_px)
                                          : "chosen by --gpu " + o.gpu));
@@ -206,8 +206,9 @@ RenderSettings checked_settings(const RenderOptions& o) {
   settings.context.tiler.parameter_cache.size_bytes = static_cast<uint32_t>(o.parameter_cache_kib) * 1024;
   settings.context.tiler.render_target_cache.size_bytes = static_cast<uint32_t>(o.rt_cache_kib) * 1024;
   settings.context.tiler.afbc = o.afbc == "on";
-  if (o.transaction_elimination == "on") {
-    settings.context.tiler.transaction_elimination = std::make_shared<TileSignatureHistory>();
+  if (o.transaction_elimination != "off") {
+    settings.context.tiler.transaction_elimination =
+        std::make_shared<TileSignatureHistory>(*parse_crc_targets(o.transaction_elimination));
   }
   settings.context.tiler.idvs = o.idvs == "on";
   settings.context.tiler.varying_precision =
@@ -333,9 +334,11 @@ void add_render_command(CLI::App& app) {
                   "per pixel at their compressed size (TBDR only; docs/memory-model.md); default off")
       ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--transaction-elimination", o->transaction_elimination,
-                  "on: a tile write whose CRC equals the previous frame's is skipped (16x16 tiles only; needs "
-                  "--frames N to have a previous frame; TBDR only; docs/memory-model.md); default off")
-      ->check(CLI::IsMember({"on", "off"}));
+                  "on: a tile write whose CRC equals the previous frame's is skipped, for one colour target per "
+                  "pass as Mali's framebuffer descriptor allows (Bifrost v7); single-target-passes: only in passes "
+                  "with one colour target (Bifrost v6); every-target: every single-sample colour write (16x16 tiles "
+                  "only; needs --frames N to have a previous frame; TBDR only; docs/memory-model.md); default off")
+      ->check(CLI::IsMember({"on", "single-target-passes", "every-target", "off"}));
   cmd->add_option("--gpu", o->gpu,
                   "GPU preset: mali-g76, mali-g71 (16x16, 128 bpp, AFBC, transaction elimination, IDVS, 512 KiB L2), "
                   "panfrost, apple-g13, adreno-630 (those drivers' tile-size rules); explicit --tile, --budget, "

@@ -32,7 +32,7 @@ void write_study_outputs(const std::string& markdown_path, const std::string& js
 }
 
 struct StudyOptions {
-  std::string scene, size = "2220x1080", markdown, json;
+  std::string scene, size = "2220x1080", markdown, json, varying_precision = "fp32", texture_compression = "none";
   bool allow_outside_files = false, progress = false;
   StudySettings settings;
 };
@@ -40,8 +40,10 @@ struct StudyOptions {
 void run_deferred_study(const StudyOptions& o) {
   StudySettings s = o.settings;
   parse_size(o.size, s.width_px, s.height_px);
+  s.varying_precision = o.varying_precision == "fp16" ? VaryingPrecision::Fp16 : VaryingPrecision::Fp32;
+  s.texture_compression = o.texture_compression;
   check_study_outputs(o.markdown, o.json);
-  const Scene scene = load_scene(o.scene, o.allow_outside_files);
+  const Scene scene = load_scene(o.scene, o.allow_outside_files, *parse_texture_compression(o.texture_compression));
   keep_freed_memory_in_the_heap();  // frame times in the steady state, independent of order
   Progress progress("study", o.progress);
   s.progress = progress.callback();
@@ -116,6 +118,13 @@ void add_study_command(CLI::App& app) {
       ->excludes("--tile")
       ->excludes("--budget")
       ->excludes("--parameter-cache-kib");
+  cmd->add_option("--varying-precision", o->varying_precision,
+                  "Stored varying size: fp32 (default) or fp16, as `ontile render --varying-precision`")
+      ->check(CLI::IsMember({"fp32", "fp16"}));
+  cmd->add_option("--texture-compression", o->texture_compression,
+                  "Storage of the scene's textures: none (default), astc4x4, astc8x8, etc2, as `ontile render "
+                  "--texture-compression`")
+      ->check(CLI::IsMember({"none", "astc4x4", "astc8x8", "etc2"}));
   add_progress_flag(cmd, o->progress);
   cmd->add_option("--markdown", o->markdown, "Also write the tables to this file (they are always printed)");
   cmd->add_option("--json", o->json,

@@ -1,6 +1,8 @@
 // The render verb's self-describing report (see render_report.h).
 #include "render_report.h"
 
+#include "memory/transaction_elimination.h"
+
 namespace ontile {
 
 nlohmann::json render_report_json(const FrameReport& report, const RenderRun& run) {
@@ -28,6 +30,9 @@ nlohmann::json render_report_json(const FrameReport& report, const RenderRun& ru
       {"render_target_cache_bytes", tiler.render_target_cache.size_bytes},
       {"afbc", tiler.afbc},
       {"transaction_elimination", tiler.transaction_elimination != nullptr},
+      {"transaction_elimination_targets", tiler.transaction_elimination
+                                              ? nlohmann::json(crc_targets_name(tiler.transaction_elimination->targets()))
+                                              : nlohmann::json()},
       {"gpu", run.gpu.empty() ? nlohmann::json() : nlohmann::json(run.gpu)},
       {"camera_pan_deg_per_frame", s.camera_pan_deg_per_frame},
       {"idvs", tiler.idvs},

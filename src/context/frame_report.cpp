@@ -159,7 +159,7 @@ nlohmann::json frame_report_json(const FrameReport& frame, const FrameReportOpti
   nlohmann::json categories = nlohmann::json::object();
   for (const auto& [name, bytes] : frame.bytes_by_category()) categories[name] = bytes;
   nlohmann::json report = {{"format", "ontile-report"},
-                            {"schema_version", 4},  // docs/report.schema.json
+                            {"schema_version", 5},  // docs/report.schema.json
                             {"frame", {{"bytes_read", frame.bytes_read()},
                                        {"bytes_written", frame.bytes_written()},
                                        {"by_category", categories}}},

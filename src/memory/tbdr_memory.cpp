@@ -52,6 +52,7 @@ void TbdrMemory::begin_pass(const PassMemoryDesc& pass) {
   // budget made smaller writes every tile.
   te_active_ = config_.transaction_elimination && pass.tile_width_px == kTransactionEliminationTilePx &&
                pass.tile_height_px == kTransactionEliminationTilePx;
+  std::vector<CrcCandidate> crc_candidates;  // attachment order, as the descriptor's render targets
   for (size_t a = 0; a < attachments; ++a) {
     const AttachmentMemory& d = pass.attachments[a];
     // AFBC prices loads at the size of the surfaces' contents before the pass.
@@ -67,18 +68,56 @@ void TbdrMemory::begin_pass(const PassMemoryDesc& pass) {
       w.eliminated.assign(tiles, 0);
       // Like Mali, TE covers single-sample colour writes.
       if (te_active_ && !d.is_depth && target.samples == 1) {
-        const std::string key = std::to_string(pass_ordinal_) + "/" + pass.name + "/" + d.name +
-                                (resolve ? "/resolve" : "/store");
-        w.signatures = &config_.transaction_elimination->table(key, pass.tile_count());
+        crc_candidates.push_back({&w, std::to_string(pass_ordinal_) + "/" + pass.name + "/" + d.name +
+                                          (resolve ? "/resolve" : "/store")});
       }
     }
   }
+  if (!crc_candidates.empty()) choose_crc_writes(crc_candidates);
   parameter_traffic_ = TextureTraffic{};
   parameter_cache_.reset();
   if (config_.parameter_cache.size_bytes > 0) {
     const uint32_t ways = config_.parameter_cache.ways;
     parameter_cache_ = std::make_unique<SetAssociativeCache>(
         static_cast<uint32_t>(config_.parameter_cache.size_bytes / (kParameterLineBytes * ways)), ways, 0);
+  }
+}
+
+void TbdrMemory::choose_crc_writes(const std::vector<CrcCandidate>& candidates) {
+  TileSignatureHistory& history = *config_.transaction_elimination;
+  std::vector<bool> chosen(candidates.size(), false);
+  switch (history.targets()) {
+    case CrcTargets::EveryTarget:
+      chosen.assign(candidates.size(), true);
+      break;
+    case CrcTargets::SingleTargetPasses: {
+      // PAN_ARCH <= 6: CRCs only when the framebuffer has one colour render target.
+      int color_attachments = 0;
+      for (const AttachmentMemory& d : pass_.attachments) color_attachments += d.is_depth ? 0 : 1;
+      if (color_attachments == 1) chosen.assign(candidates.size(), true);
+      break;
+    }
+    case CrcTargets::OnePerPass: {
+      // PAN_ARCH >= 7: the first render target whose CRCs are valid, else the first one (every
+      // ontile pass renders its whole framebuffer, the descriptor's other condition).
+      size_t pick = 0;
+      for (size_t i = 0; i < candidates.size(); ++i) {
+        if (history.valid(candidates[i].key)) {
+          pick = i;
+          break;
+        }
+      }
+      if (!candidates.empty()) chosen[pick] = true;
+      break;
+    }
+  }
+  const int tiles = pass_.tile_count();
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    if (chosen[i]) {
+      candidates[i].write->signatures = &history.table(candidates[i].key, tiles);
+    } else {
+      history.invalidate(candidates[i].key);  // written without CRCs: the old ones are stale
+    }
   }
 }
 

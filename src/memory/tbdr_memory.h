@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "memory/memory_model.h"
@@ -35,6 +36,14 @@ class TbdrMemory final : public MemoryModel {
     std::vector<uint8_t> eliminated;     // per tile: TE skipped the write
     TileSignatureHistory::Table* signatures = nullptr;  // null: no TE for this write
   };
+  // A colour write that could keep CRCs, and its key in the history.
+  struct CrcCandidate {
+    Write* write;
+    std::string key;
+  };
+  // Gives the writes the pass's CRC rule picks (TileSignatureHistory::targets()) their tables.
+  void choose_crc_writes(const std::vector<CrcCandidate>& candidates);
+
   PassMemoryDesc pass_;
   int pass_ordinal_ = 0;  // passes begun in this frame
   bool te_active_ = false;

@@ -5,7 +5,47 @@
 
 #include <zlib.h>
 
+#include <algorithm>
+
 namespace ontile {
+
+namespace {
+struct CrcTargetsName {
+  CrcTargets targets;
+  const char* name;
+};
+constexpr CrcTargetsName kCrcTargetsNames[] = {{CrcTargets::OnePerPass, "on"},
+                                               {CrcTargets::SingleTargetPasses, "single-target-passes"},
+                                               {CrcTargets::EveryTarget, "every-target"}};
+}  // namespace
+
+const char* crc_targets_name(CrcTargets targets) {
+  for (const CrcTargetsName& n : kCrcTargetsNames) {
+    if (n.targets == targets) return n.name;
+  }
+  return nullptr;
+}
+
+const CrcTargets* parse_crc_targets(const std::string& name) {
+  for (const CrcTargetsName& n : kCrcTargetsNames) {
+    if (name == n.name) return &n.targets;
+  }
+  return nullptr;
+}
+
+bool TileSignatureHistory::valid(const std::string& key) const {
+  const auto it = tables_.find(key);
+  if (it == tables_.end()) return false;
+  for (const uint8_t v : it->second.valid) {
+    if (v) return true;
+  }
+  return false;
+}
+
+void TileSignatureHistory::invalidate(const std::string& key) {
+  const auto it = tables_.find(key);
+  if (it != tables_.end()) std::fill(it->second.valid.begin(), it->second.valid.end(), 0);
+}
 
 TileSignatureHistory::Table& TileSignatureHistory::table(const std::string& key, int tiles) {
   Table& t = tables_[key];

@@ -37,6 +37,14 @@ std::string mib(uint64_t bytes) {
 }
 
 
+// The application's choices when not the defaults, for the table's heading.
+std::string application_choices(const StudySettings& s) {
+  std::string text;
+  if (s.varying_precision == VaryingPrecision::Fp16) text += ", fp16 varyings";
+  if (s.texture_compression != "none") text += ", " + s.texture_compression + " textures";
+  return text;
+}
+
 }  // namespace
 
 std::vector<StudyVariant> deferred_study_variants(int lights) {
@@ -73,6 +81,7 @@ std::vector<StudyRow> run_study(const Scene& scene, const StudySettings& s, cons
       if (!preset) throw Error("study: unknown GPU preset '" + s.gpu + "' (known: " + gpu_preset_names() + ")");
       apply_gpu_preset(*preset, settings.context.tiler);
     }
+    settings.context.tiler.varying_precision = s.varying_precision;
     for (const auto& [key, value] : v.options) settings.options.set(key, value);
     StudyRow row;
     row.variant = v;
@@ -108,14 +117,14 @@ std::string deferred_study_markdown(const std::vector<StudyRow>& rows, const Stu
   if (!s.gpu.empty()) {
     md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", --gpu " +
           s.gpu + " (" + find_gpu_preset(s.gpu)->description + "), " + std::to_string(s.lights) +
-          " point lights; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+          " point lights" + application_choices(s) + "; MiB per frame (1 MiB = 2^20 bytes).\n\n";
   } else {
   md += "Scene " + scene_name + ", " + std::to_string(s.width_px) + "x" + std::to_string(s.height_px) + ", " +
         std::to_string(s.tile_size_px) + "x" + std::to_string(s.tile_size_px) + " tiles, " +
         std::to_string(s.color_budget_bits_per_px) + "-bit colour budget, " + std::to_string(s.lights) +
         " point lights" +
         (s.parameter_cache_kib > 0 ? ", a " + std::to_string(s.parameter_cache_kib) + " KiB parameter-buffer read cache" : "") +
-        "; MiB per frame (1 MiB = 2^20 bytes).\n\n";
+        application_choices(s) + "; MiB per frame (1 MiB = 2^20 bytes).\n\n";
   }
   md += "| variant | passes | tile | tiles | read | written | attachment load | attachment store | resolve | texture | "
         "vertex+index | param. write | param. read | frame ms |\n";

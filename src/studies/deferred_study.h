@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
+#include "tiler/render_pass_executor.h"
 
 namespace ontile {
 
@@ -34,6 +35,10 @@ struct StudySettings {
   // elimination each variant renders one more frame first, so its row is the steady state of a
   // static camera (every variant starts from an empty CRC history).
   std::string gpu;
+  // The application's choices no preset makes: stored varying size, and the storage format of
+  // the scene's textures (the caller loads the scene with it; reported here).
+  VaryingPrecision varying_precision = VaryingPrecision::Fp32;
+  std::string texture_compression = "none";
   ProgressCallback progress;    // optional: hears of every rendered frame
 };
 

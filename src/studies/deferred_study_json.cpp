@@ -43,6 +43,8 @@ nlohmann::json deferred_study_json(const std::vector<StudyRow>& rows, const Stud
                          {"lights", s.lights},
                          {"parameter_cache_kib", s.parameter_cache_kib},
                          {"gpu", s.gpu.empty() ? nlohmann::json() : nlohmann::json(s.gpu)},
+                         {"varying_precision", s.varying_precision == VaryingPrecision::Fp16 ? "fp16" : "fp32"},
+                         {"texture_compression", s.texture_compression},
                          {"variants", variants}};
   const StudyRow* two_passes = study_format::find_row(rows, std::string("two render passes"));
   const StudyRow* subpasses = study_format::find_row(rows, std::string("subpasses, transient"));

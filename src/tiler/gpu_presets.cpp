@@ -15,7 +15,8 @@ std::vector<GpuPreset> make_presets() {
   GpuPreset g76;
   g76.name = "mali-g76";
   g76.description = "Arm Mali-G76 (Vulkan-Samples' subpasses, msaa and afbc device): 16x16 tiles, 128 bpp of colour "
-                    "on tile, AFBC, transaction elimination, IDVS, 512 KiB L2";
+                    "on tile, AFBC, transaction elimination (one CRC render target per pass, Bifrost v7), IDVS, "
+                    "512 KiB L2";
   g76.afbc = true;
   g76.transaction_elimination = true;
   g76.index_driven_vertex_shading = true;
@@ -25,7 +26,9 @@ std::vector<GpuPreset> make_presets() {
   GpuPreset g71 = g76;
   g71.name = "mali-g71";
   g71.description = "Arm Mali-G71 (Vulkan-Samples' render_passes device): as mali-g76 (Bifrost: 16x16 tiles, 128 bpp, "
-                    "AFBC, transaction elimination, IDVS); its L2 (128 KiB-2 MiB by configuration) taken as 512 KiB";
+                    "AFBC, IDVS), but transaction elimination only in passes with one colour target (Bifrost v6); its "
+                    "L2 (128 KiB-2 MiB by configuration) taken as 512 KiB";
+  g71.crc_targets = CrcTargets::SingleTargetPasses;
   presets.push_back(g71);
 
   GpuPreset panfrost;
@@ -88,7 +91,7 @@ void apply_gpu_preset(const GpuPreset& preset, TilerConfig& config) {
   config.gmem = preset.gmem;
   config.afbc = preset.afbc;
   config.transaction_elimination =
-      preset.transaction_elimination ? std::make_shared<TileSignatureHistory>() : nullptr;
+      preset.transaction_elimination ? std::make_shared<TileSignatureHistory>(preset.crc_targets) : nullptr;
   config.idvs = preset.index_driven_vertex_shading;
   if (preset.l2_bytes > 0) {
     config.texture_cache.size_bytes = preset.l2_bytes;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "memory/transaction_elimination.h"
 #include "tiler/render_pass_executor.h"
 
 namespace ontile {
@@ -20,6 +21,7 @@ struct GpuPreset {
   FreedrenoGmem gmem;                    // Freedreno rule
   bool afbc = false;
   bool transaction_elimination = false;
+  CrcTargets crc_targets = CrcTargets::OnePerPass;  // which writes of a pass keep CRCs (the GPU's arch)
   // Index-driven vertex shading (TilerConfig::idvs: positions for every vertex, varyings only for
   // the vertices of triangles that survive culling): Mali Bifrost and later do it. Varying
   // precision and texture compression are not preset: they are the application's choices (its

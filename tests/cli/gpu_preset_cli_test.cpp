@@ -46,6 +46,7 @@ TEST(GpuPresetCli, MaliG76RendersAndReportsWhatItSet) {
   EXPECT_EQ(j["run"]["gpu"], "mali-g76");
   EXPECT_EQ(j["run"]["afbc"], true);
   EXPECT_EQ(j["run"]["transaction_elimination"], true);
+  EXPECT_EQ(j["run"]["transaction_elimination_targets"], "on") << "one CRC render target per pass (Bifrost v7)";
   EXPECT_EQ(j["run"]["idvs"], true);
   EXPECT_EQ(j["run"]["varying_precision"], "fp32") << "the application's choice, not the preset's";
   EXPECT_EQ(j["run"]["texture_compression"], "none") << "the assets' choice, not the preset's";
@@ -66,6 +67,18 @@ TEST(GpuPresetCli, APanningCameraEliminatesFewerTiles) {
   EXPECT_EQ(b["run"]["camera_pan_deg_per_frame"], 5.0);
   EXPECT_LT(sum_over_attachments(b, "te_tiles_eliminated"), sum_over_attachments(a, "te_tiles_eliminated"));
   EXPECT_GT(sum_over_attachments(b, "bytes_stored"), sum_over_attachments(a, "bytes_stored"));
+}
+
+TEST(GpuPresetCli, MaliG71ComparesOnlyPassesWithOneColourTarget) {
+  const fs::path out = temp_folder() / "g71.png", report = temp_folder() / "g71.json";
+  const CliRun r = run_cli("render --scene " + kDemo + " --size 160x96 --threads 2 --gpu mali-g71 --out " +
+                           out.string() + " --report " + report.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_json(report)["run"]["transaction_elimination_targets"], "single-target-passes");
+  const CliRun every = run_cli("render --scene " + kDemo + " --size 160x96 --threads 2 --transaction-elimination "
+                               "every-target --out " + out.string() + " --report " + report.string());
+  ASSERT_EQ(every.exit_code, 0) << every.output;
+  EXPECT_EQ(read_json(report)["run"]["transaction_elimination_targets"], "every-target");
 }
 
 TEST(GpuPresetCli, ExplicitOptionsOverrideThePreset) {

@@ -73,5 +73,35 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
   }
 }
 
+// With --gpu mali-g76 (transaction elimination on one CRC target per pass) a static view's
+// subpass frame stores no colour at all, while the two-pass frame's G-buffer pass still writes
+// its second colour target (the normal, AFBC-compressed) besides the uncompressed depth. fp16
+// varyings only shrink the parameter buffer.
+TEST(DeferredStudy, MaliG76ComparesOneGBufferTargetPerPass) {
+  const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
+  StudySettings s;
+  s.width_px = 160;
+  s.height_px = 96;
+  s.threads = 2;
+  s.lights = 4;
+  s.gpu = "mali-g76";
+  const std::vector<StudyVariant> variants = deferred_study_variants(s.lights);
+  const std::vector<StudyRow> rows = run_study(scene, s, {variants[0], variants[1]});
+  const uint64_t px = uint64_t(s.width_px) * s.height_px;
+  auto store = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_store"); };
+  EXPECT_EQ(store(rows[1]), 0u) << "the light target is eliminated, the G-buffer transient";
+  EXPECT_GT(store(rows[0]), 4 * px) << "depth (D32F, never compressed) and the normal target";
+  EXPECT_LT(store(rows[0]), 8 * px) << "the albedo is eliminated; the normal is compressed";
+
+  StudySettings half = s;
+  half.varying_precision = VaryingPrecision::Fp16;
+  const std::vector<StudyRow> fp16 = run_study(scene, half, {variants[1]});
+  EXPECT_LT(fp16[0].bytes_by_category.at("parameter_buffer_write"),
+            rows[1].bytes_by_category.at("parameter_buffer_write"));
+  EXPECT_EQ(fp16[0].bytes_read, rows[1].bytes_read - (rows[1].bytes_by_category.at("parameter_buffer_read") -
+                                                       fp16[0].bytes_by_category.at("parameter_buffer_read")));
+  EXPECT_EQ(deferred_study_json(fp16, half, "demo.glb")["varying_precision"], "fp16");
+}
+
 }  // namespace
 }  // namespace ontile
