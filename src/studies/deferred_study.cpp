@@ -50,7 +50,9 @@ std::string application_choices(const StudySettings& s) {
 std::vector<StudyVariant> deferred_study_variants(int lights) {
   const std::string n = std::to_string(lights);
   return {
-      {"two render passes", "deferred-classic", {{"gbuffer", "vulkan-samples"}, {"lights", n}}},
+      // The sample's "two render passes": the G-buffer stored, then loaded as input attachments.
+      {"two render passes", "deferred-subpass",
+       {{"gbuffer", "vulkan-samples"}, {"lights", n}, {"technique", "render-passes"}}},
       {"subpasses, transient", "deferred-subpass", {{"gbuffer", "vulkan-samples"}, {"lights", n}}},
       {"subpasses, transient off", "deferred-subpass", {{"gbuffer", "vulkan-samples"}, {"lights", n}, {"transient", "off"}}},
       {"subpasses, G-buffer stored", "deferred-subpass",
@@ -59,6 +61,8 @@ std::vector<StudyVariant> deferred_study_variants(int lights) {
       {"forward", "forward", {{"lights", n}}},
       {"forward 4x MSAA, on-tile resolve", "forward", {{"lights", n}, {"msaa", "4"}}},
       {"forward 4x MSAA, separate resolve", "forward", {{"lights", n}, {"msaa", "4"}, {"resolve", "separate"}}},
+      // The classic renderer: the lighting pass samples the stored G-buffer as textures.
+      {"two render passes, G-buffer sampled", "deferred-classic", {{"gbuffer", "vulkan-samples"}, {"lights", n}}},
   };
 }
 

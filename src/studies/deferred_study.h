@@ -52,10 +52,12 @@ struct StudyRow {
   double median_frame_ms = 0.0;
 };
 
-// Two render passes, subpasses, subpasses without transient attachments, the same with the
-// G-buffer and depth stored (store op STORE), subpasses with the
-// vulkan-samples-large G-buffer, forward, forward 4x MSAA resolved on tile, forward 4x MSAA
-// stored and resolved by a separate pass; every variant with `lights` generated point lights.
+// Two render passes (the G-buffer stored and loaded back, as the sample), subpasses, subpasses
+// without transient attachments, the same with the G-buffer and depth stored (store op STORE),
+// subpasses with the vulkan-samples-large G-buffer, forward, forward 4x MSAA resolved on tile,
+// forward 4x MSAA stored and resolved by a separate pass, and two render passes whose lighting
+// samples the G-buffer as textures (deferred-classic); every variant with `lights` generated
+// point lights.
 std::vector<StudyVariant> deferred_study_variants(int lights);
 
 // Renders every variant (traffic is deterministic; time is the median over settings.frames).

@@ -50,7 +50,10 @@ TEST(DeferredPipelines, ClassicAndSubpassImagesAreBitIdentical) {
     for (const std::string lights : {"0", "1", "64"}) {
       const RenderedFrame classic = render(scene, "deferred-classic", 200, 112, {{"gbuffer", preset}, {"lights", lights}});
       const RenderedFrame subpass = render(scene, "deferred-subpass", 200, 112, {{"gbuffer", preset}, {"lights", lights}});
+      const RenderedFrame passes = render(scene, "deferred-subpass", 200, 112,
+                                          {{"gbuffer", preset}, {"lights", lights}, {"technique", "render-passes"}});
       ASSERT_EQ(classic.outputs.color->bytes(), subpass.outputs.color->bytes()) << preset << ", " << lights << " lights";
+      ASSERT_EQ(passes.outputs.color->bytes(), subpass.outputs.color->bytes()) << preset << ", " << lights << " lights";
     }
   }
 }
@@ -106,6 +109,22 @@ TEST(DeferredPipelines, AttachmentTrafficIsTheAnalyticPerPixelFormula) {
     const FrameReport r =
         render(scene, "deferred-subpass", w, h, {{"transient", "off"}, {"gbuffer_store", "store"}}).outputs.report;
     EXPECT_EQ(r.bytes_by_category().at("attachment_store"), 16 * px);
+  }
+  {  // vulkan-samples, two render passes as the sample: the geometry pass clears and stores
+    // light, depth, albedo and normal (4 B/px each); the lighting pass loads all four as input
+    // attachments and stores the light. No texture reads.
+    const FrameReport r =
+        render(scene, "deferred-subpass", w, h, {{"lights", "8"}, {"technique", "render-passes"}}).outputs.report;
+    ASSERT_EQ(r.passes.size(), 2u);
+    for (const char* name : {"light", "depth", "albedo", "normal"}) {
+      EXPECT_EQ(attachment(r, "gbuffer", name).bytes_stored, 4 * px) << name;
+      EXPECT_EQ(attachment(r, "lighting", name).bytes_loaded, 4 * px) << name;
+    }
+    EXPECT_EQ(attachment(r, "lighting", "light").bytes_stored, 4 * px);
+    EXPECT_EQ(pass_named(r, "lighting").texture.bytes_read, 0u);
+    const auto by = r.bytes_by_category();
+    EXPECT_EQ(by.at("attachment_store"), 20 * px);
+    EXPECT_EQ(by.at("attachment_load"), 16 * px);
   }
   {  // unity, two passes + tonemap: G-buffer pass stores light 8 + diffuse, specular, normal,
     // depth 4 each; lighting loads and stores the light (8 + 8) reading depth + 3 targets as
@@ -196,6 +215,9 @@ TEST(DeferredPipelines, BadOptionsAreErrors) {
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"lights", "-1"}}), Error);
   EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"transient", "off"}}), Error);
   EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"gbuffer_store", "store"}}), Error);
+  EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"technique", "passes"}}), Error);
+  EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"technique", "render-passes"}, {"transient", "off"}}), Error);
+  EXPECT_THROW(render(scene, "deferred-classic", 64, 64, {{"technique", "render-passes"}}), Error);
   EXPECT_THROW(render(scene, "forward", 64, 64, {{"msaa", "3"}}), Error);
   EXPECT_THROW(render(scene, "forward", 64, 64, {{"resolve", "separate"}}), Error);
   EXPECT_THROW(render(scene, "deferred-subpass", 64, 64, {{"msaa", "4"}}), Error);

@@ -17,15 +17,23 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
   s.threads = 2;
   s.lights = 4;
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
-  ASSERT_EQ(rows.size(), 8u);
+  ASSERT_EQ(rows.size(), 9u);
   const uint64_t px = uint64_t(s.width_px) * s.height_px;
   auto store = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_store"); };
   auto load = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_load"); };
   auto resolve = [](const StudyRow& r) { return r.bytes_by_category.at("resolve"); };
-  // Two render passes: albedo, normal, depth and light stored (4 B/px each).
-  EXPECT_EQ(store(rows[0]), 16 * px);
+  // Two render passes, as the sample: the geometry pass stores light, depth, albedo and normal
+  // (4 B/px each), the lighting pass loads all four and stores the light again.
+  EXPECT_EQ(store(rows[0]), 20 * px);
+  EXPECT_EQ(load(rows[0]), 16 * px);
+  EXPECT_EQ(rows[0].bytes_by_category.at("texture"), rows[1].bytes_by_category.at("texture"))
+      << "the G-buffer comes back as loads, not texture reads";
   EXPECT_EQ(rows[0].passes, 2);
   EXPECT_EQ(rows[0].tiles, 2 * rows[1].tiles);  // each pass walks every tile
+  // The classic renderer: albedo, normal, depth and light stored, the G-buffer sampled.
+  EXPECT_EQ(store(rows[8]), 16 * px);
+  EXPECT_EQ(load(rows[8]), 0u);
+  EXPECT_GT(rows[8].bytes_by_category.at("texture"), rows[1].bytes_by_category.at("texture"));
   // Subpasses: only the light target.
   EXPECT_EQ(store(rows[1]), 4 * px);
   // Transient attachments off with store op DONT_CARE: memory behind them, nothing written.
@@ -74,9 +82,10 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
 }
 
 // With --gpu mali-g76 (transaction elimination on one CRC target per pass) a static view's
-// subpass frame stores no colour at all, while the two-pass frame's G-buffer pass still writes
-// its second colour target (the normal, AFBC-compressed) besides the uncompressed depth. fp16
-// varyings only shrink the parameter buffer.
+// subpass frame stores no colour at all, while the two-pass frame's geometry pass writes albedo
+// and normal (AFBC-compressed; the CRCs go to the light target, its first render target) besides
+// the uncompressed depth, and the lighting pass loads them back compressed. fp16 varyings only
+// shrink the parameter buffer.
 TEST(DeferredStudy, MaliG76ComparesOneGBufferTargetPerPass) {
   const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
   StudySettings s;
@@ -89,9 +98,12 @@ TEST(DeferredStudy, MaliG76ComparesOneGBufferTargetPerPass) {
   const std::vector<StudyRow> rows = run_study(scene, s, {variants[0], variants[1]});
   const uint64_t px = uint64_t(s.width_px) * s.height_px;
   auto store = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_store"); };
+  auto load = [](const StudyRow& r) { return r.bytes_by_category.at("attachment_load"); };
   EXPECT_EQ(store(rows[1]), 0u) << "the light target is eliminated, the G-buffer transient";
-  EXPECT_GT(store(rows[0]), 4 * px) << "depth (D32F, never compressed) and the normal target";
-  EXPECT_LT(store(rows[0]), 8 * px) << "the albedo is eliminated; the normal is compressed";
+  EXPECT_GT(store(rows[0]), 4 * px) << "depth (D32F, never compressed), albedo and normal";
+  EXPECT_LT(store(rows[0]), 12 * px) << "albedo and normal compressed, the light target eliminated";
+  EXPECT_GT(load(rows[0]), 4 * px) << "depth is loaded uncompressed";
+  EXPECT_LT(load(rows[0]), 16 * px) << "colour targets are loaded compressed";
 
   StudySettings half = s;
   half.varying_precision = VaryingPrecision::Fp16;

@@ -42,6 +42,12 @@ DeferredOptions parse_deferred_options(const PipelineOptions& options, DeferredV
     if (o.store_gbuffer && o.transient) {
       throw Error("pipeline option gbuffer_store=store needs transient=off (a transient attachment has no memory to store to)");
     }
+    o.two_render_passes =
+        parse_switch("technique", options.take("technique", "subpasses"), "render-passes", "subpasses");
+    if (o.two_render_passes && (o.store_gbuffer || !o.transient)) {
+      throw Error("pipeline option technique=render-passes stores and loads the G-buffer itself: leave transient and "
+                  "gbuffer_store at their defaults");
+    }
   }
   if (variant == DeferredVariant::Forward) {
     o.msaa_samples = parse_int("msaa", options.take("msaa", "1"), 1, 8);

@@ -12,6 +12,9 @@ struct DeferredOptions {
   bool tonemap = false;  // auto: on when the light target is HDR (float)
   bool transient = true;         // subpass: G-buffer and depth without memory behind them
   bool store_gbuffer = false;    // subpass: G-buffer and depth stored (needs transient off)
+  // subpass: technique=render-passes splits G-buffer and lighting into two render passes that
+  // hand the G-buffer over by store and load (Vulkan-Samples' "two render passes").
+  bool two_render_passes = false;
   int msaa_samples = 1;
   bool separate_resolve = false;
 };

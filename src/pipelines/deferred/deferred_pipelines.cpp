@@ -104,6 +104,64 @@ FrameOutputs render_classic(const FrameInputs& in, const DeferredOptions& option
   return setup.kit.submit(graph, options.tonemap ? final_image : light);
 }
 
+// Vulkan-Samples' subpasses sample with "render technique: two render passes"
+// (Subpasses::draw_renderpasses): the geometry pass clears and stores every attachment of the
+// render target, the light target included (gbuffer::get_clear_store_all); the lighting pass
+// loads them all (get_load_all_store_swapchain), reads depth and the G-buffer as input
+// attachments and stores only the light target. Unlike deferred-classic nothing is sampled as a
+// texture: the G-buffer comes back as tile loads, which AFBC prices compressed.
+FrameOutputs render_two_render_passes(RenderContext& ctx, const FrameInputs& in, const DeferredOptions& options,
+                                      const FrameSetup& setup) {
+  const GBufferLayout& layout = options.layout;
+  const int w = in.width_px, h = in.height_px;
+  const std::vector<PixelFormat> formats = layout.target_formats();
+  const std::vector<std::string> names = layout.target_names();
+  const int targets = layout.target_count();
+  Surface* light = setup.kit.create_target("light", layout.light_format);
+  Surface* depth = setup.kit.create_target("depth", layout.depth_format);
+  Surface* final_image = options.tonemap ? setup.kit.create_target("final", PixelFormat::RGBA8_SRGB) : nullptr;
+  std::vector<Surface*> gbuffer;
+  for (int k = 0; k < targets; ++k) gbuffer.push_back(setup.kit.create_target(names[k], formats[k]));
+
+  std::vector<AttachmentDesc> written = {Attachment::stored("light", light).clear(lit::kBackgroundColor),
+                                         Attachment::stored("depth", depth).clear_depth(1.0f)};
+  std::vector<int> gbuffer_outputs, lighting_inputs{1};
+  if (layout.light_in_gbuffer) gbuffer_outputs.push_back(0);
+  for (int k = 0; k < targets; ++k) {
+    gbuffer_outputs.push_back(static_cast<int>(written.size()));
+    lighting_inputs.push_back(static_cast<int>(written.size()));
+    written.push_back(Attachment::stored(names[k], gbuffer[k]).clear(glm::vec4(0.0f)));
+  }
+  ctx.begin_render_pass("gbuffer", w, h, 1, written, 1);
+  ctx.begin_subpass(gbuffer_outputs);
+  draw_opaque(ctx, setup, deferred::kGBuffer);
+  ctx.end_subpass();
+  ctx.end_render_pass();
+
+  std::vector<AttachmentDesc> loaded = {
+      options.tonemap ? Attachment::stored("light", light).load().discard() : Attachment::stored("light", light).load(),
+      Attachment::stored("depth", depth).load().discard()};
+  for (int k = 0; k < targets; ++k) loaded.push_back(Attachment::stored(names[k], gbuffer[k]).load().discard());
+  const int final_index = static_cast<int>(loaded.size());
+  if (options.tonemap) loaded.push_back(Attachment::stored("final", final_image));
+  ctx.begin_render_pass("lighting", w, h, 1, loaded, 1);
+  ctx.begin_subpass({0}, lighting_inputs, true);
+  ctx.draw_full_screen(&setup.library.lighting_material(false), deferred::kLightingPass);
+  ctx.end_subpass();
+  if (setup.has_transparent) {
+    ctx.begin_subpass({0}, {}, true);
+    draw_transparent(ctx, setup);
+    ctx.end_subpass();
+  }
+  if (options.tonemap) {
+    ctx.begin_subpass({final_index}, {0}, true);
+    ctx.draw_full_screen(&setup.library.tonemap_material(false), deferred::kTonemapPass);
+    ctx.end_subpass();
+  }
+  ctx.end_render_pass();
+  return setup.kit.submit(options.tonemap ? final_image : light);
+}
+
 }  // namespace
 
 FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in) {
@@ -112,6 +170,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
   });
   const FrameSetup setup(in, options, ctx);
   if (!subpasses_) return render_classic(in, options, setup);
+  if (options.two_render_passes) return render_two_render_passes(ctx, in, options, setup);
   const GBufferLayout& layout = options.layout;
   const int w = in.width_px, h = in.height_px;
   const std::vector<PixelFormat> formats = layout.target_formats();

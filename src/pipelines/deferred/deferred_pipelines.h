@@ -8,7 +8,9 @@
 //                    resolved on tile or by a separate resolve pass.
 // Options (--set, and --gbuffer/--lights on the CLI): gbuffer=unity|vulkan-samples|
 // vulkan-samples-large|bjorge, lights=N (generated point lights), tonemap=auto|on|off; subpass only:
-// transient=on|off, gbuffer_store=dont-care|store (store needs transient=off); forward only: msaa=1|2|4|8, resolve=on-tile|separate.
+// transient=on|off, gbuffer_store=dont-care|store (store needs transient=off), technique=subpasses|
+// render-passes (Vulkan-Samples' two render passes: the G-buffer stored, then loaded as input
+// attachments); forward only: msaa=1|2|4|8, resolve=on-tile|separate.
 #pragma once
 #include "pipelines/kit/pipeline.h"
 
