@@ -53,15 +53,7 @@ std::vector<AttachmentTraffic> render_pass(const std::shared_ptr<TileSignatureHi
                           store_b ? StoreAction::Store : StoreAction::DontCare, glm::vec4(0.0f), b, nullptr}},
                         -1);
   ctx.begin_subpass({0, 1});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = idx.data();
-  d.index_count = static_cast<uint32_t>(idx.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  ctx.draw(d);
+  ctx.draw(unculled_draw(vs, fs, idx));
   ctx.end_subpass();
   ctx.end_render_pass();
   return ctx.submit().passes.at(0).attachments;

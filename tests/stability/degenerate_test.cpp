@@ -147,15 +147,7 @@ TEST(Degenerate, VaryingsOfTinyTrianglesStayFiniteAndInRange) {
   VaryingsShader fs;
   ctx.begin_render_pass("v", kW, kH, 1, {{"v", PixelFormat::RGBA32_FLOAT, LoadAction::Clear, StoreAction::Store, glm::vec4(-1.0f), target, nullptr}}, -1);
   ctx.begin_subpass({0});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = idx.data();
-  d.index_count = static_cast<uint32_t>(idx.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  ctx.draw(d);
+  ctx.draw(unculled_draw(vs, fs, idx));
   ctx.end_subpass();
   ctx.end_render_pass();
   ctx.submit();

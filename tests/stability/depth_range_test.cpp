@@ -77,13 +77,8 @@ std::vector<float> draw_planes(const DepthSetup& s, const std::vector<Plane>& pl
                         1);
   ctx.begin_subpass({0});
   for (const std::vector<uint32_t>& idx : indices) {
-    DrawCall d;
-    d.vertex_shader = &vs;
-    d.fragment_shader = &fs;
-    d.vertex_count = vs.vertex_count();
-    d.indices = idx.data();
-    d.index_count = static_cast<uint32_t>(idx.size());
-    d.raster.cull = CullMode::None;
+    DrawCall d = unculled_draw(vs, fs, idx);
+    d.raster.depth_test = true;
     d.raster.depth_compare = op;
     ctx.draw(d);
   }

@@ -9,13 +9,19 @@
 namespace ontile {
 namespace {
 
-TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
-  const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
+// The demo at 160x96 with 4 lights, on 2 threads.
+StudySettings small_study() {
   StudySettings s;
   s.width_px = 160;
   s.height_px = 96;
   s.threads = 2;
   s.lights = 4;
+  return s;
+}
+
+TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
+  const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
+  const StudySettings s = small_study();
   const std::vector<StudyRow> rows = run_study(scene, s, deferred_study_variants(s.lights));
   ASSERT_EQ(rows.size(), 9u);
   const uint64_t px = uint64_t(s.width_px) * s.height_px;
@@ -88,11 +94,7 @@ TEST(DeferredStudy, AttachmentTrafficOfEveryVariantIsAnalytic) {
 // shrink the parameter buffer.
 TEST(DeferredStudy, MaliG76ComparesOneGBufferTargetPerPass) {
   const Scene scene = load_gltf(std::string(ONTILE_SOURCE_DIR) + "/scenes/demo.glb");
-  StudySettings s;
-  s.width_px = 160;
-  s.height_px = 96;
-  s.threads = 2;
-  s.lights = 4;
+  StudySettings s = small_study();
   s.gpu = "mali-g76";
   const std::vector<StudyVariant> variants = deferred_study_variants(s.lights);
   const std::vector<StudyRow> rows = run_study(scene, s, {variants[0], variants[1]});

@@ -54,13 +54,10 @@ inline glm::vec4 pixel_to_clip(double x, double y, int width, int height, double
                    static_cast<float>(w));
 }
 
-// Records one pass with a single colour attachment and one draw of `indices`: no culling, no
-// depth, additive blending (so overlapping coverage adds up).
-inline void record_additive_pass(RenderContext& ctx, const std::string& name, int width, int height, int samples,
-                                 const AttachmentDesc& target, const ClipSpaceVertexShader& vs,
-                                 const FragmentShader& fs, const std::vector<uint32_t>& indices) {
-  ctx.begin_render_pass(name, width, height, samples, {target}, -1);
-  ctx.begin_subpass({0});
+// One draw of `indices` with no culling and no depth test (`vs`, `fs` and `indices` must outlive
+// the frame's submit()).
+inline DrawCall unculled_draw(const ClipSpaceVertexShader& vs, const FragmentShader& fs,
+                              const std::vector<uint32_t>& indices) {
   DrawCall d;
   d.vertex_shader = &vs;
   d.fragment_shader = &fs;
@@ -69,6 +66,17 @@ inline void record_additive_pass(RenderContext& ctx, const std::string& name, in
   d.index_count = static_cast<uint32_t>(indices.size());
   d.raster.cull = CullMode::None;
   d.raster.depth_test = false;
+  return d;
+}
+
+// Records one pass with a single colour attachment and one draw of `indices`: no culling, no
+// depth, additive blending (so overlapping coverage adds up).
+inline void record_additive_pass(RenderContext& ctx, const std::string& name, int width, int height, int samples,
+                                 const AttachmentDesc& target, const ClipSpaceVertexShader& vs,
+                                 const FragmentShader& fs, const std::vector<uint32_t>& indices) {
+  ctx.begin_render_pass(name, width, height, samples, {target}, -1);
+  ctx.begin_subpass({0});
+  DrawCall d = unculled_draw(vs, fs, indices);
   d.blend.mode = BlendMode::Additive;
   ctx.draw(d);
   ctx.end_subpass();

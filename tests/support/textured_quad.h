@@ -53,15 +53,7 @@ inline TexturedQuadResult draw_textured_quad(std::shared_ptr<const Texture2D> te
                           StoreAction::Store, glm::vec4(0.0f), target, nullptr}},
                         -1);
   ctx.begin_subpass({0});
-  DrawCall d;
-  d.vertex_shader = &vs;
-  d.fragment_shader = &fs;
-  d.vertex_count = vs.vertex_count();
-  d.indices = indices.data();
-  d.index_count = static_cast<uint32_t>(indices.size());
-  d.raster.cull = CullMode::None;
-  d.raster.depth_test = false;
-  ctx.draw(d);
+  ctx.draw(unculled_draw(vs, fs, indices));
   ctx.end_subpass();
   ctx.end_render_pass();
   const FrameReport frame = ctx.submit();

@@ -104,6 +104,26 @@ FrameOutputs render_classic(const FrameInputs& in, const DeferredOptions& option
   return setup.kit.submit(graph, options.tonemap ? final_image : light);
 }
 
+// The subpasses after the G-buffer, in the render pass that holds it: lighting from depth and
+// the G-buffer as input attachments into the light target (attachment 0), the transparent
+// objects forward on top, and the tonemap of an HDR light target into `final_index`.
+void record_on_tile_lighting(RenderContext& ctx, const FrameSetup& setup, bool tonemap,
+                             const std::vector<int>& lighting_inputs, int final_index) {
+  ctx.begin_subpass({0}, lighting_inputs, true);
+  ctx.draw_full_screen(&setup.library.lighting_material(false), deferred::kLightingPass);
+  ctx.end_subpass();
+  if (setup.has_transparent) {
+    ctx.begin_subpass({0}, {}, true);
+    draw_transparent(ctx, setup);
+    ctx.end_subpass();
+  }
+  if (tonemap) {
+    ctx.begin_subpass({final_index}, {0}, true);
+    ctx.draw_full_screen(&setup.library.tonemap_material(false), deferred::kTonemapPass);
+    ctx.end_subpass();
+  }
+}
+
 // Vulkan-Samples' subpasses sample with "render technique: two render passes"
 // (Subpasses::draw_renderpasses): the geometry pass clears and stores every attachment of the
 // render target, the light target included (gbuffer::get_clear_store_all); the lighting pass
@@ -145,19 +165,7 @@ FrameOutputs render_two_render_passes(RenderContext& ctx, const FrameInputs& in,
   const int final_index = static_cast<int>(loaded.size());
   if (options.tonemap) loaded.push_back(Attachment::stored("final", final_image));
   ctx.begin_render_pass("lighting", w, h, 1, loaded, 1);
-  ctx.begin_subpass({0}, lighting_inputs, true);
-  ctx.draw_full_screen(&setup.library.lighting_material(false), deferred::kLightingPass);
-  ctx.end_subpass();
-  if (setup.has_transparent) {
-    ctx.begin_subpass({0}, {}, true);
-    draw_transparent(ctx, setup);
-    ctx.end_subpass();
-  }
-  if (options.tonemap) {
-    ctx.begin_subpass({final_index}, {0}, true);
-    ctx.draw_full_screen(&setup.library.tonemap_material(false), deferred::kTonemapPass);
-    ctx.end_subpass();
-  }
+  record_on_tile_lighting(ctx, setup, options.tonemap, lighting_inputs, final_index);
   ctx.end_render_pass();
   return setup.kit.submit(options.tonemap ? final_image : light);
 }
@@ -206,19 +214,7 @@ FrameOutputs DeferredPipeline::render(RenderContext& ctx, const FrameInputs& in)
   ctx.begin_subpass(gbuffer_outputs);
   draw_opaque(ctx, setup, deferred::kGBuffer);
   ctx.end_subpass();
-  ctx.begin_subpass({0}, lighting_inputs, true);
-  ctx.draw_full_screen(&setup.library.lighting_material(false), deferred::kLightingPass);
-  ctx.end_subpass();
-  if (setup.has_transparent) {
-    ctx.begin_subpass({0}, {}, true);
-    draw_transparent(ctx, setup);
-    ctx.end_subpass();
-  }
-  if (options.tonemap) {
-    ctx.begin_subpass({final_index}, {0}, true);
-    ctx.draw_full_screen(&setup.library.tonemap_material(false), deferred::kTonemapPass);
-    ctx.end_subpass();
-  }
+  record_on_tile_lighting(ctx, setup, options.tonemap, lighting_inputs, final_index);
   ctx.end_render_pass();
   return setup.kit.submit(options.tonemap ? final_image : light);
 }
