@@ -1,6 +1,7 @@
 // What the pieces of the `ontile._ontile` extension share: the loaded scene and a rendered
 // frame as Python sees them, and the functions that add each group of bindings to the module.
 #pragma once
+#include "raster/texture_compression.h"
 #include <memory>
 #include <string>
 
@@ -17,6 +18,7 @@ namespace ontile::python {
 struct LoadedScene {
   std::string path;
   std::shared_ptr<const Scene> scene;
+  TextureCompression texture_compression = TextureCompression::None;  // how its images are stored
 };
 
 // One rendered frame: the context owns the image surface, the report is the render verb's JSON.
@@ -40,6 +42,7 @@ void bind_python_pipelines(pybind11::module_& m);
 // Renders `settings` with `pipeline` (a registered one when null: settings.pipeline) and fills
 // the report as `ontile render --report` writes it.
 std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const RenderSettings& settings,
-                                          const CameraOverride& camera, bool tile_report, Pipeline* pipeline);
+                                          const CameraOverride& camera, bool tile_report, const std::string& gpu,
+                                          Pipeline* pipeline);
 
 }  // namespace ontile::python

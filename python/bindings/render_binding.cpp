@@ -18,11 +18,17 @@ namespace py = pybind11;
 namespace ontile::python {
 namespace {
 
-LoadedScene load_scene(const std::string& path, bool allow_outside_files) {
+LoadedScene load_scene(const std::string& path, bool allow_outside_files, const std::string& texture_compression) {
   GltfLoadOptions options;  // as the CLI loads scenes (apps/ontile/cli_scene.cpp)
   options.allow_uris_outside_scene_folder = allow_outside_files;
+  const std::optional<TextureCompression> compression = parse_texture_compression(texture_compression);
+  if (!compression) {
+    throw Error("texture_compression: '" + texture_compression + "' not one of none, astc4x4, astc8x8, etc2");
+  }
+  options.texture_compression = *compression;
   LoadedScene loaded;
   loaded.path = path;
+  loaded.texture_compression = *compression;
   {
     py::gil_scoped_release release;
     loaded.scene = std::make_shared<const Scene>(load_gltf(path, options));
@@ -83,13 +89,14 @@ std::unique_ptr<RenderResult> render_any(const LoadedScene& scene, const py::obj
     camera.has_view = true;
     camera.view = matrix_from_numpy(*view);
   }
-  return render_with(scene, parsed.settings, camera, parsed.tile_report, python_pipeline.get());
+  return render_with(scene, parsed.settings, camera, parsed.tile_report, parsed.gpu, python_pipeline.get());
 }
 
 }  // namespace
 
 std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const RenderSettings& settings,
-                                          const CameraOverride& camera, bool tile_report, Pipeline* pipeline) {
+                                          const CameraOverride& camera, bool tile_report, const std::string& gpu,
+                                          Pipeline* pipeline) {
   auto result = std::make_unique<RenderResult>();
   result->scene = scene.scene;
   std::unique_ptr<Pipeline> registered;
@@ -112,7 +119,7 @@ std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const Render
     result->frame.outputs = pipeline->render(*result->frame.context, inputs);
   }
   if (!result->frame.outputs.color) throw Error("pipeline '" + settings.pipeline + "' returned no image");
-  const RenderRun run{scene.path, settings, "", std::nullopt, tile_report};
+  const RenderRun run{scene.path, settings, "", std::nullopt, tile_report, gpu, scene.texture_compression};
   result->report_json = render_report_json(result->frame.outputs.report, run).dump(2) + "\n";
   return result;
 }
@@ -139,7 +146,9 @@ void bind_render(py::module_& m) {
       .def_property_readonly("triangle_count", [](const LoadedScene& s) { return s.scene->drawn_triangle_count(); })
       .def("__repr__", [](const LoadedScene& s) { return "<ontile.Scene '" + s.path + "'>"; });
   m.def("load_scene", &load_scene, py::arg("path"), py::arg("allow_outside_files") = false,
-        "Loads a .gltf or .glb scene with the CLI's loader limits; ontile.Error on a bad file");
+        py::arg("texture_compression") = "none",
+        "Loads a .gltf or .glb scene with the CLI's loader limits; texture_compression as `ontile render "
+        "--texture-compression` (none, astc4x4, astc8x8, etc2); ontile.Error on a bad file");
 
   m.def("pipeline_names", &pipeline_names, "The registered pipelines, sorted");
   m.def("pipeline_description", [](const std::string& name) { return make_pipeline(name)->description(); });

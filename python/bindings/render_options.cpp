@@ -3,6 +3,9 @@
 // ValueError here too.
 #include "render_options.h"
 
+#include "memory/transaction_elimination.h"
+#include "tiler/gpu_presets.h"
+
 #include <algorithm>
 #include <map>
 #include <vector>
@@ -100,10 +103,20 @@ ParsedOptions parse_render_options(const py::dict& options, ParsedOptions parsed
          p.settings.options.set("gbuffer", set_value(k, v)); }},
       {"lights", [](const std::string& k, const py::handle& v, ParsedOptions& p) {
          p.settings.options.set("lights", set_value(k, v)); }},
+      {"gpu", [](const std::string&, const py::handle&, ParsedOptions&) {}},  // applied before the others
+      {"idvs", [](const std::string& k, const py::handle& v, ParsedOptions& p) {
+         p.settings.context.tiler.idvs = py::isinstance<py::bool_>(v) ? v.cast<bool>() : choice(k, v, {"on", "off"}) == "on"; }},
+      {"varying_precision", [](const std::string& k, const py::handle& v, ParsedOptions& p) {
+         p.settings.context.tiler.varying_precision =
+             choice(k, v, {"fp32", "fp16"}) == "fp16" ? VaryingPrecision::Fp16 : VaryingPrecision::Fp32; }},
       {"tiles", [](const std::string& k, const py::handle& v, ParsedOptions& p) {
          if (!py::isinstance<py::bool_>(v)) throw Error("options['" + k + "']: expected True or False");
          p.tile_report = v.cast<bool>(); }},
   };
+  if (options.contains("gpu")) {
+    parsed.gpu = choice("gpu", options["gpu"], gpu_preset_list());
+    apply_gpu_preset(*find_gpu_preset(parsed.gpu), s.context.tiler);
+  }
   for (const auto& [key_handle, value] : options) {
     const std::string key = text_of(key_handle);
     if (key == "set") {
@@ -122,6 +135,12 @@ ParsedOptions parse_render_options(const py::dict& options, ParsedOptions parsed
       throw Error("options: unknown key '" + key + "' (valid: " + joined(valid) + ")");
     }
     it->second(key, value, parsed);
+  }
+  // As the CLI: the preset's transaction elimination compares 16x16 tiles only.
+  const TilerConfig& tiler = s.context.tiler;
+  if (tiler.transaction_elimination && tiler.tile_size_rule == TileSizeRule::Budget &&
+      tiler.tile_size_px != kTransactionEliminationTilePx) {
+    throw Error("options['tile']: gpu " + parsed.gpu + " turns on transaction elimination, which needs 16x16 tiles");
   }
   return parsed;
 }

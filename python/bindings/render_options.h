@@ -1,6 +1,7 @@
 // The options of ontile.render(options={...}): the `ontile render` flags by their names with
-// underscores (tile, budget, arch, render_graph, ...) and `set` for the pipeline's --set
-// options, checked against the same ranges and choices as the CLI.
+// underscores (tile, budget, arch, render_graph, gpu, idvs, ...) and `set` for the pipeline's
+// --set options, checked against the same ranges and choices as the CLI. A `gpu` preset applies
+// first, whatever the dictionary's order, and explicit keys override it, as on the CLI.
 #pragma once
 #include <string>
 
@@ -13,6 +14,7 @@ namespace ontile::python {
 struct ParsedOptions {
   RenderSettings settings;
   bool tile_report = false;  // --tiles
+  std::string gpu;           // --gpu preset, empty without it
 };
 
 // Throws ontile::Error (ValueError in Python) naming the key for an unknown key or bad value.

@@ -42,6 +42,23 @@ class RenderMatchesCli(unittest.TestCase):
         self.check_same_as_cli("deferred", "deferred-subpass", ["--gbuffer", "vulkan-samples", "--lights", "8"],
                                {"gbuffer": "vulkan-samples", "lights": 8})
 
+    def test_gpu_preset_and_fidelity_options(self):
+        result = self.check_same_as_cli("g76", "deferred-subpass",
+                                        ["--gpu", "mali-g76", "--varying-precision", "fp16"],
+                                        {"varying_precision": "fp16", "gpu": "mali-g76"})
+        self.assertEqual(result.report["run"]["gpu"], "mali-g76")
+        self.assertEqual(result.report["run"]["transaction_elimination_targets"], "on")
+        self.check_same_as_cli("no-idvs", "lambert", ["--gpu", "mali-g71", "--idvs", "off"],
+                               {"gpu": "mali-g71", "idvs": False})
+
+    def test_compressed_textures_are_a_scene_option(self):
+        cli_png, cli_report = cli_render(self.out, "astc-cli",
+                                         ["--pipeline", "lambert", "--size", "160x90", "--texture-compression", "astc8x8"])
+        scene = ontile.load_scene(DEMO, texture_compression="astc8x8")
+        result = ontile.render(scene, pipeline="lambert", size=SIZE)
+        self.assertEqual(without_timing(result.report), without_timing(cli_report))
+        self.assertEqual(result.report["run"]["texture_compression"], "astc8x8")
+
     def test_thread_count_changes_no_bit(self):
         one = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=1)
         seven = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=7)
@@ -87,6 +104,11 @@ class BadInputRaises(unittest.TestCase):
         self.assertRaisesValue("options['budget']", options={"budget": 8})
         self.assertRaisesValue("options['render_graph']", options={"render_graph": "all"})
         self.assertRaisesValue("options['tiles']", options={"tiles": 1})
+        self.assertRaisesValue("options['gpu']", options={"gpu": "mali-g999"})
+        self.assertRaisesValue("needs 16x16 tiles", options={"tile": 32, "gpu": "mali-g76"})
+        self.assertRaisesValue("options['varying_precision']", options={"varying_precision": "fp8"})
+        with self.assertRaises(ValueError):
+            ontile.load_scene(DEMO, texture_compression="bc7")
 
     def test_pipeline_rejects_unknown_set_option(self):
         self.assertRaisesValue("has no option 'msa'", pipeline="lambert", options={"set": {"msa": 4}})
