@@ -104,7 +104,23 @@ HWY_INLINE void footprint_taps(DI di, const Texture2D::Level& level, const int32
 // level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
 // Granules are computed on 64-bit lanes for uncompressed 4-byte texels (every 8-bit texture not
 // block-compressed); block-compressed levels map each texel to its block's address.
-void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
+// Granules a batch call gathers before appending them to the trace at once (a vector insert per
+// quad cost about 70 instructions): `last` is the trace's last granule with these appended.
+struct TraceStaging {
+  static constexpr int kCapacity = 1024;
+  static constexpr int kMaxPerQuad = 2 * 4 * kLanes + 1;
+  uint64_t granules[kCapacity];
+  int count = 0;
+  uint64_t last = 0;
+  void flush(std::vector<uint64_t>& trace) {
+    trace.insert(trace.end(), granules, granules + count);
+    count = 0;
+  }
+};
+
+// staging: where a batch call gathers the granules (trace_repeats is 1 there), or null to
+// append to in.trace.
+void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], TraceStaging* staging) {
   alignas(32) uint64_t granule[2][4][kLanes];  // [level][tap][lane]
   const hn::CappedTag<uint64_t, kLanes> d64;
   const hn::Rebind<int64_t, decltype(d64)> ds64;
@@ -176,6 +192,16 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
       }
     }
   }
+  if (staging) {
+    if (staging->count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging->flush(*in.trace);
+    uint64_t* out = staging->granules + staging->count;
+    out[0] = first;
+    const int kept_first = first != staging->last;
+    std::memcpy(out + kept_first, tail, sizeof(uint64_t) * static_cast<size_t>(tail_count));
+    staging->count += kept_first + tail_count;
+    staging->last = last;
+    return;
+  }
   uint64_t previous = *in.last_granule;
   for (int repeat = 0; repeat < in.trace_repeats; ++repeat) {
     if (first != previous) in.trace->push_back(first);
@@ -188,7 +214,7 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes]) {
 // One quad: result[c][lane]. False, touching nothing, when it needs the general path.
 // u, v: the 4 lanes' finite coordinates (in.uv is not read).
 HWY_INLINE bool sample_one(const QuadSample8& in, const float* u, const float* v,
-                           float result[4][kLanes]) {
+                           float result[4][kLanes], TraceStaging* staging) {
   const hn::CappedTag<float, kLanes> d;
   const hn::RebindToSigned<decltype(d)> di;
   // With one level, level 1's lanes are filtered too but not used: they are zeroed below (a
@@ -206,7 +232,7 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const float* u, const float* v
     }
     footprint_taps(di, level, fp.i0[l], fp.j0[l], in.wrap_u, in.wrap_v, taps[l]);
   }
-  if (in.trace) record_trace(in, taps);
+  if (in.trace) record_trace(in, taps, staging);
   // Texels: one 32-bit RGBA8 load per tap, level and lane, laid out [tap][level * 4 + lane] so
   // that both levels' bilinear filters run on the same 8 lanes (two 4-lane vectors on targets
   // with 128-bit vectors); each channel is decoded through its table on the lanes at once. A
@@ -244,7 +270,9 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const float* u, const float* v
   const auto byte_mask = hn::Set(di8, 0xFF);
   const auto one8 = hn::Set(d8, 1.0f);
   alignas(32) float filtered[4][kPairs];  // [channel][level * 4 + lane]
-  for (size_t i = 0; i < static_cast<size_t>(in.level_count * kLanes); i += n8) {
+  // Both levels' lanes always (level 1's are zero with one level): no lane of `filtered` is left
+  // unwritten, and 8-lane targets run this once either way.
+  for (size_t i = 0; i < static_cast<size_t>(kPairs); i += n8) {
     hn::Vec<decltype(d8)> tap_value[4][4];  // [tap][channel]
     for (int t = 0; t < 4; ++t) {
       const auto p = hn::Load(di8, packed[t] + i);
@@ -282,7 +310,7 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
     v[lane] = in.uv[lane].y;
   }
   alignas(16) float result[4][kLanes];
-  if (!sample_one(in, u, v, result)) return false;
+  if (!sample_one(in, u, v, result, nullptr)) return false;
   for (int lane = 0; lane < kLanes; ++lane) {
     out[lane] = {result[0][lane], result[1][lane], result[2][lane], result[3][lane]};
   }
@@ -304,6 +332,16 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
     jobs[r].trace = batch.trace;
     jobs[r].last_granule = batch.last_granule;
   }
+  TraceStaging staging;
+  if (batch.trace) staging.last = *batch.last_granule;
+  // Before returning, the staged granules go to the trace (the general path appends after them).
+  const auto finish = [&](int position) {
+    if (batch.trace) {
+      staging.flush(*batch.trace);
+      *batch.last_granule = staging.last;
+    }
+    return position;
+  };
   const int end = batch.quad_count * batch.read_count;
   for (int position = first; position < end;) {
     const int q = position / batch.read_count;
@@ -311,9 +349,11 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
     // finite_or_zero on lanes: |x| < inf is false for NaN and infinities.
     alignas(16) float u[kLanes], v[kLanes];
     const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
-    const auto raw_u = hn::LoadU(d, batch.u + f0), raw_v = hn::LoadU(d, batch.v + f0);
-    hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_u), inf), raw_u), d, u);
-    hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_v), inf), raw_v), d, v);
+    for (size_t i = 0; i < kLanes; i += hn::Lanes(d)) {
+      const auto raw_u = hn::LoadU(d, batch.u + f0 + i), raw_v = hn::LoadU(d, batch.v + f0 + i);
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_u), inf), raw_u), d, u + i);
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_v), inf), raw_v), d, v + i);
+    }
     for (int r = position - q * batch.read_count; r < batch.read_count; ++r, ++position) {
       const BatchRead8& read = batch.reads[r];
       QuadSample8& job = jobs[r];
@@ -345,11 +385,11 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
         }
       }
       alignas(16) float result[4][kLanes];
-      if (!sample_one(job, u, v, result)) return position;
+      if (!sample_one(job, u, v, result, &staging)) return finish(position);
       for (int c = 0; c < 4; ++c) std::memcpy(read.out[c] + f0, result[c], sizeof result[c]);
     }
   }
-  return end;
+  return finish(end);
 }
 
 }  // namespace HWY_NAMESPACE
