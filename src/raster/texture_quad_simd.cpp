@@ -100,26 +100,26 @@ HWY_INLINE void footprint_taps(DI di, const Texture2D::Level& level, const int32
   }
 }
 
-// Appends the quad's texel granules to the trace in the scalar sampler's order: lane by lane,
-// level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
-// Granules are computed on 64-bit lanes for uncompressed 4-byte texels (every 8-bit texture not
-// block-compressed); block-compressed levels map each texel to its block's address.
 // Granules a batch call gathers before appending them to the trace at once (a vector insert per
-// quad cost about 70 instructions): `last` is the trace's last granule with these appended.
+// quad cost about 70 instructions): granules[1 .. count] in trace order, `last` the trace's last
+// granule with them appended. granules[0] is a spare slot record_trace may write.
 struct TraceStaging {
   static constexpr int kCapacity = 1024;
-  static constexpr int kMaxPerQuad = 2 * 4 * kLanes + 1;
-  uint64_t granules[kCapacity];
+  static constexpr int kMaxPerQuad = 2 * 4 * kLanes + 2;  // every granule of a quad, and a spare
+  uint64_t granules[1 + kCapacity];
   int count = 0;
   uint64_t last = 0;
   void flush(std::vector<uint64_t>& trace) {
-    trace.insert(trace.end(), granules, granules + count);
+    trace.insert(trace.end(), granules + 1, granules + 1 + count);
     count = 0;
   }
 };
 
-// staging: where a batch call gathers the granules (trace_repeats is 1 there), or null to
-// append to in.trace.
+// Appends the quad's texel granules to the trace in the scalar sampler's order: lane by lane,
+// level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
+// Granules are computed on 64-bit lanes for uncompressed 4-byte texels (every 8-bit texture not
+// block-compressed); block-compressed levels map each texel to its block's address. staging:
+// where a batch call gathers them (trace_repeats is 1 there), or null to append to in.trace.
 void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], TraceStaging* staging) {
   alignas(32) uint64_t granule[2][4][kLanes];  // [level][tap][lane]
   const hn::CappedTag<uint64_t, kLanes> d64;
@@ -143,12 +143,24 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], Trace
       }
     }
   }
-  // The footprint's first granule, then the rest with repeats of the previous one merged: only
-  // the first can merge with what the trace held before, so a repeated fetch (trace_repeats)
-  // appends the same tail again.
-  uint64_t kept[2 * 4 * kLanes];
-  const uint64_t* tail = kept;
+  // The footprint's first granule, then the tail: the rest with repeats of the previous one
+  // merged. Only the first can merge with what the trace held before, so a repeated fetch
+  // (trace_repeats) appends the same tail again. The sequence is written at `sequence`, the
+  // first granule at sequence[0] and the tail after it. When staging, the tail goes straight
+  // after the staged granules, and sequence[0] is the slot before it: a new slot when the first
+  // granule is kept, else the last staged granule (or the spare slot), which already holds that
+  // same value.
   const uint64_t first = in.levels[0]->texel_byte_address(static_cast<size_t>(taps[0][0][0])) >> 6;
+  uint64_t local[1 + 2 * 4 * kLanes];
+  uint64_t* sequence = local;
+  int kept_first = 0;
+  if (staging) {
+    if (staging->count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging->flush(*in.trace);
+    kept_first = first != staging->last;
+    sequence = staging->granules + staging->count + kept_first;
+  }
+  sequence[0] = first;
+  uint64_t* const tail = sequence + 1;
   uint64_t last = first;
   int tail_count = 0;
   // The common footprint (most quads): each row's two texels share a granule, the two rows do
@@ -169,23 +181,23 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], Trace
     regular = regular && granule[0][0][lane] != granule[levels - 1][3][lane - 1];
   }
   if (regular) {
+    // sequence[0] is written again with the first granule, the same value.
+    int count = 0;
     for (int lane = 0; lane < kLanes; ++lane) {
       for (int l = 0; l < levels; ++l) {
-        kept[tail_count] = granule[l][0][lane];
-        kept[tail_count + 1] = granule[l][2][lane];
-        tail_count += 2;
+        sequence[count] = granule[l][0][lane];
+        sequence[count + 1] = granule[l][2][lane];
+        count += 2;
       }
     }
-    // kept[0] is the first granule, which the tail leaves out (as the loop below does).
-    last = kept[tail_count - 1];
-    tail = kept + 1;
-    --tail_count;
+    last = sequence[count - 1];
+    tail_count = count - 1;
   } else {
     for (int lane = 0; lane < kLanes; ++lane) {
       for (int l = 0; l < levels; ++l) {
         for (int t = 0; t < 4; ++t) {
           const uint64_t g = granule[l][t][lane];
-          kept[tail_count] = g;
+          tail[tail_count] = g;
           tail_count += g != last;
           last = g;
         }
@@ -193,11 +205,6 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], Trace
     }
   }
   if (staging) {
-    if (staging->count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging->flush(*in.trace);
-    uint64_t* out = staging->granules + staging->count;
-    out[0] = first;
-    const int kept_first = first != staging->last;
-    std::memcpy(out + kept_first, tail, sizeof(uint64_t) * static_cast<size_t>(tail_count));
     staging->count += kept_first + tail_count;
     staging->last = last;
     return;
