@@ -542,6 +542,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
                              const float* v, int quad_count) {
   // 8-bit reads with Linear filters (the common sampler) run in one dispatch per batch; a batch
   // with any other read samples quad by quad and read by read through sample_quad.
+  if (read_count <= 0 || quad_count <= 0) return;
   BatchRead8 batch_reads[QuadBatch8::kMaxReads];
   TexelDecoder decoders[QuadBatch8::kMaxReads];
   bool all_linear8 = read_count <= QuadBatch8::kMaxReads;

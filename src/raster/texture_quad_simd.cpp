@@ -129,15 +129,17 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], Trace
   const int levels = in.level_count;
   for (int l = 0; l < levels; ++l) {
     const Texture2D::Level& level = *in.levels[l];
-    for (int t = 0; t < 4; ++t) {
-      if (level.memory_bytes_per_texel == 4 && level.block_bytes == 0) {
-        const auto base = hn::Set(d64, level.address);
+    if (level.memory_bytes_per_texel == 4 && level.block_bytes == 0) {
+      const auto base = hn::Set(d64, level.address);
+      for (int t = 0; t < 4; ++t) {
         for (size_t i = 0; i < kLanes; i += n) {
           const auto texel = hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, taps[l][t] + i)));
           hn::Store(hn::ShiftRight<6>(hn::Add(base, hn::ShiftLeft<2>(texel))), d64, granule[l][t] + i);
         }
-        continue;
       }
+      continue;
+    }
+    for (int t = 0; t < 4; ++t) {
       for (int lane = 0; lane < kLanes; ++lane) {
         granule[l][t][lane] = level.texel_byte_address(static_cast<size_t>(taps[l][t][lane])) >> 6;
       }
@@ -349,9 +351,9 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
     }
     return position;
   };
-  const int end = batch.quad_count * batch.read_count;
-  for (int position = first; position < end;) {
-    const int q = position / batch.read_count;
+  const int first_quad = first / batch.read_count;
+  int first_read = first - first_quad * batch.read_count;
+  for (int q = first_quad; q < batch.quad_count; ++q, first_read = 0) {
     const int f0 = q * kLanes;
     // finite_or_zero on lanes: |x| < inf is false for NaN and infinities.
     alignas(16) float u[kLanes], v[kLanes];
@@ -361,7 +363,7 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
       hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_u), inf), raw_u), d, u + i);
       hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(raw_v), inf), raw_v), d, v + i);
     }
-    for (int r = position - q * batch.read_count; r < batch.read_count; ++r, ++position) {
+    for (int r = first_read; r < batch.read_count; ++r) {
       const BatchRead8& read = batch.reads[r];
       QuadSample8& job = jobs[r];
       // quad_lambda: rho = max(|d(uv)/dx|, |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7).
@@ -392,11 +394,11 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
         }
       }
       alignas(16) float result[4][kLanes];
-      if (!sample_one(job, u, v, result, &staging)) return finish(position);
+      if (!sample_one(job, u, v, result, &staging)) return finish(q * batch.read_count + r);
       for (int c = 0; c < 4; ++c) std::memcpy(read.out[c] + f0, result[c], sizeof result[c]);
     }
   }
-  return finish(end);
+  return finish(batch.quad_count * batch.read_count);
 }
 
 }  // namespace HWY_NAMESPACE
