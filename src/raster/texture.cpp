@@ -221,13 +221,11 @@ class Linear8Sampler {
   uint64_t last_;
 };
 
-// sample_with_lambda for 8-bit textures whose filters are all Linear (the common sampler).
-// Quads run on SIMD lanes (texture_quad_simd.h, the same bits); coordinates beyond 2^24 texels
-// take the scalar path below.
-void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
-                         const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
-                         int fetches, glm::vec4 out[4]) {
-  QuadSample8 simd;
+// The SIMD job of sample_with_lambda for an 8-bit texture whose filters are all Linear (the
+// common sampler) at level of detail lambda: the level (or the two levels and their blend).
+inline void linear8_job(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
+                        const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda, int fetches,
+                        QuadSample8& simd) {
   simd.uv = uv;
   simd.wrap_u = sampler.wrap_u;
   simd.wrap_v = sampler.wrap_v;
@@ -239,16 +237,14 @@ void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const Texe
   const float max_level = static_cast<float>(levels.size() - 1);
   const bool base_only = !(lambda > 0.0f) || sampler.mipmap_mode == MipmapMode::None;
   if (!base_only) lambda = std::min(lambda, max_level);
-  int single_level = 0;
-  float d1_float = 0.0f, blend = 0.0f;
   if (base_only) {
     simd.levels[0] = &levels[0];
   } else if (sampler.mipmap_mode == MipmapMode::Nearest) {
-    single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+    const int single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
     simd.levels[0] = &levels[single_level];
   } else {
-    d1_float = std::floor(lambda);
-    blend = lambda - d1_float;
+    const float d1_float = std::floor(lambda);
+    const float blend = lambda - d1_float;
     simd.levels[0] = &levels[static_cast<int>(d1_float)];
     if (blend != 0.0f) {
       simd.levels[1] = &levels[static_cast<int>(d1_float) + 1];
@@ -256,26 +252,35 @@ void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const Texe
       simd.blend = blend;
     }
   }
-  if (sample_quad8_simd(simd, out)) return;
+}
 
-  // The general path (rare: huge coordinates) samples once per fetch, so each is traced.
+// The general path of a job (rare: huge coordinates), sample_with_lambda's filters lane by lane;
+// it samples once per fetch, so each is traced.
+void sample_linear8_scalar(const QuadSample8& job, const TexelDecoder& decoder,
+                           const SamplerDesc& sampler, glm::vec4 out[4]) {
   Linear8Sampler s(decoder, sampler);
-  for (int fetch = 0; fetch < fetches; ++fetch) {
-    if (base_only || sampler.mipmap_mode == MipmapMode::Nearest) {
-      for (int lane = 0; lane < 4; ++lane) out[lane] = s.sample(levels[single_level], uv[lane]);
-      continue;
-    }
-    const int d1 = static_cast<int>(d1_float);
+  for (int fetch = 0; fetch < job.trace_repeats; ++fetch) {
     for (int lane = 0; lane < 4; ++lane) {
-      const glm::vec4 s1 = s.sample(levels[d1], uv[lane]);
-      if (blend == 0.0f) {
+      const glm::vec4 s1 = s.sample(*job.levels[0], job.uv[lane]);
+      if (job.level_count == 1) {
         out[lane] = s1;
         continue;
       }
-      const glm::vec4 s2 = s.sample(levels[d1 + 1], uv[lane]);
-      out[lane] = s1 * (1.0f - blend) + s2 * blend;
+      const glm::vec4 s2 = s.sample(*job.levels[1], job.uv[lane]);
+      out[lane] = s1 * (1.0f - job.blend) + s2 * job.blend;
     }
   }
+}
+
+// sample_with_lambda for 8-bit textures whose filters are all Linear. Quads run on SIMD lanes
+// (texture_quad_simd.h, the same bits); coordinates beyond 2^24 texels take the scalar path.
+void sample_quad_linear8(const std::vector<Texture2D::Level>& levels, const TexelDecoder& decoder,
+                         const SamplerDesc& sampler, const glm::vec2 uv[4], float lambda,
+                         int fetches, glm::vec4 out[4]) {
+  QuadSample8 job;
+  linear8_job(levels, decoder, sampler, uv, lambda, fetches, job);
+  if (sample_quad8_simd(job, out)) return;
+  sample_linear8_scalar(job, decoder, sampler, out);
 }
 
 template <Storage kStorage>
@@ -531,6 +536,76 @@ void Texture2D::sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4],
     case Storage::Bytes8: break;
   }
   sample_quad_lanes<Storage::Bytes8>(levels_, decoder, sampler, uv, fetches, out);
+}
+
+void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float* u,
+                             const float* v, int quad_count) {
+  // 8-bit reads with Linear filters (the common sampler) run in one dispatch per batch; a batch
+  // with any other read samples quad by quad and read by read through sample_quad.
+  if (read_count <= 0 || quad_count <= 0) return;
+  BatchRead8 batch_reads[QuadBatch8::kMaxReads];
+  TexelDecoder decoders[QuadBatch8::kMaxReads];
+  bool all_linear8 = read_count <= QuadBatch8::kMaxReads;
+  for (int r = 0; r < read_count && all_linear8; ++r) {
+    const Texture2D& t = *reads[r].texture;
+    const SamplerDesc& sampler = *reads[r].sampler;
+    all_linear8 = storage_of(t.encoding_) == Storage::Bytes8 &&
+                  sampler.mag_filter == FilterMode::Linear && sampler.min_filter == FilterMode::Linear;
+    decoders[r] = decoder_for(t.encoding_);
+    BatchRead8& read = batch_reads[r];
+    read.levels = t.levels_.data();
+    read.max_level = static_cast<float>(t.levels_.size() - 1);
+    read.mipmap_mode = sampler.mipmap_mode;
+    read.lod_bias = sampler.lod_bias;
+    read.wrap_u = sampler.wrap_u;
+    read.wrap_v = sampler.wrap_v;
+    read.rgb_decode = decoders[r].rgb;
+    read.alpha_decode = decoders[r].alpha;
+    for (int c = 0; c < 4; ++c) read.out[c] = reads[r].out[c];
+  }
+  if (!all_linear8) {
+    for (int q = 0; q < quad_count; ++q) {
+      const int f0 = q * 4;
+      const glm::vec2 uv[4] = {{u[f0], v[f0]}, {u[f0 + 1], v[f0 + 1]}, {u[f0 + 2], v[f0 + 2]},
+                               {u[f0 + 3], v[f0 + 3]}};
+      for (int r = 0; r < read_count; ++r) {
+        glm::vec4 texel[4];
+        reads[r].texture->sample_quad(*reads[r].sampler, uv, texel);
+        for (int lane = 0; lane < 4; ++lane) {
+          for (int c = 0; c < 4; ++c) reads[r].out[c][f0 + lane] = texel[lane][c];
+        }
+      }
+    }
+    return;
+  }
+  QuadBatch8 batch;
+  batch.reads = batch_reads;
+  batch.read_count = read_count;
+  batch.u = u;
+  batch.v = v;
+  batch.quad_count = quad_count;
+  batch.trace = texel_trace_detail::sink;
+  batch.last_granule = &texel_trace_detail::last_granule;
+  const int end = quad_count * read_count;
+  for (int position = sample_quad_batch8_simd(batch, 0); position < end;
+       position = sample_quad_batch8_simd(batch, position + 1)) {
+    // The general path (rare: huge coordinates) for job (quad q, read r), as sample_quad runs it.
+    const int q = position / read_count, r = position % read_count, f0 = q * 4;
+    glm::vec2 finite_uv[4];
+    for (int lane = 0; lane < 4; ++lane) {
+      finite_uv[lane] = {finite_or_zero(u[f0 + lane]), finite_or_zero(v[f0 + lane])};
+    }
+    const SamplerDesc& sampler = *reads[r].sampler;
+    const std::vector<Level>& levels = reads[r].texture->levels_;
+    const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
+    QuadSample8 job;
+    linear8_job(levels, decoders[r], sampler, finite_uv, lambda, 1, job);
+    glm::vec4 texel[4];
+    sample_linear8_scalar(job, decoders[r], sampler, texel);
+    for (int lane = 0; lane < 4; ++lane) {
+      for (int c = 0; c < 4; ++c) reads[r].out[c][f0 + lane] = texel[lane][c];
+    }
+  }
 }
 
 }  // namespace ontile

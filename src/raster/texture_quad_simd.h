@@ -29,4 +29,36 @@ struct QuadSample8 {
 // code.
 bool sample_quad8_simd(const QuadSample8& in, glm::vec4 out[4]);
 
+// One 8-bit texture read with Linear filters of a QuadBatch8: its levels, sampler and decode
+// tables, and where fragment f's channel c goes (out[c][f]).
+struct BatchRead8 {
+  const Texture2D::Level* levels = nullptr;
+  float max_level = 0.0f;  // level count - 1
+  MipmapMode mipmap_mode = MipmapMode::Linear;
+  float lod_bias = 0.0f;
+  WrapMode wrap_u = WrapMode::Repeat, wrap_v = WrapMode::Repeat;
+  const float* rgb_decode = nullptr;
+  const float* alpha_decode = nullptr;
+  float* out[4] = {nullptr, nullptr, nullptr, nullptr};
+};
+
+// Texture2D::sample_quads for reads that are all BatchRead8: quad q's lane i is fragment
+// f = 4 q + i at (u[f], v[f]), not yet made finite.
+struct QuadBatch8 {
+  static constexpr int kMaxReads = 4;
+  const BatchRead8* reads = nullptr;
+  int read_count = 0;
+  const float* u = nullptr;
+  const float* v = nullptr;
+  int quad_count = 0;
+  std::vector<uint64_t>* trace = nullptr;  // texel trace sink, or null
+  uint64_t* last_granule = nullptr;
+};
+
+// Samples the batch's jobs (quad q, read r), position q * read_count + r, from `first` on in
+// that order, with one dispatch: the level of detail and level selection of sample_quad, then
+// sample_quad8_simd's filter and trace. Returns the position of the first job that needs the
+// general path (nothing of it read or traced), or quad_count * read_count when all ran.
+int sample_quad_batch8_simd(const QuadBatch8& batch, int first);
+
 }  // namespace ontile

@@ -52,22 +52,32 @@ class LambertShader final : public FragmentShader {
     if constexpr (kBaseMap || kEmissionMap) {
       const float* u = batch.varyings[MeshVertexShader::kUv];
       const float* v = batch.varyings[MeshVertexShader::kUv + 1];
-      for (int q = 0; q < batch.quad_count; ++q) {
-        const int f0 = q * kQuadLanes;
-        const glm::vec2 uv[kQuadLanes] = {{u[f0], v[f0]}, {u[f0 + 1], v[f0 + 1]},
-                                          {u[f0 + 2], v[f0 + 2]}, {u[f0 + 3], v[f0 + 3]}};
-        glm::vec4 texel[kQuadLanes];
+      // Texels land in albedo and emissive (emission's alpha in a scratch row), then the factors
+      // multiply them in place. Per quad, base then emission: the texel trace's order.
+      alignas(64) float emission_alpha[kBatchFragments];
+      Texture2D::QuadRead reads[2];
+      int read_count = 0;
+      if constexpr (kBaseMap) {
+        reads[read_count++] = {p_.base_map, &p_.base_sampler, {albedo[0], albedo[1], albedo[2], albedo[3]}};
+      }
+      if constexpr (kEmissionMap) {
+        reads[read_count++] = {p_.emission_map, &p_.emission_sampler,
+                               {emissive[0], emissive[1], emissive[2], emission_alpha}};
+      }
+      Texture2D::sample_quads(reads, read_count, u, v, batch.quad_count);
+      // Quad by quad, 4 lanes at a time (one SIMD multiply per channel at -O2).
+      for (int f0 = 0; f0 < batch.quad_count * kQuadLanes; f0 += kQuadLanes) {
         if constexpr (kBaseMap) {
-          p_.base_map->sample_quad(p_.base_sampler, uv, texel);
-          for (int lane = 0; lane < kQuadLanes; ++lane) {
-            for (int c = 0; c < 4; ++c) albedo[c][f0 + lane] = p_.base_color[c] * texel[lane][c];
+          for (int c = 0; c < 4; ++c) {
+            const float factor = p_.base_color[c];
+            for (int lane = 0; lane < kQuadLanes; ++lane) albedo[c][f0 + lane] = factor * albedo[c][f0 + lane];
           }
         }
         // glTF 2.0 3.9.3: emissive = emissiveFactor x emissiveTexture (sRGB).
         if constexpr (kEmissionMap) {
-          p_.emission_map->sample_quad(p_.emission_sampler, uv, texel);
-          for (int lane = 0; lane < kQuadLanes; ++lane) {
-            for (int c = 0; c < 3; ++c) emissive[c][f0 + lane] = p_.emission[c] * texel[lane][c];
+          for (int c = 0; c < 3; ++c) {
+            const float factor = p_.emission[c];
+            for (int lane = 0; lane < kQuadLanes; ++lane) emissive[c][f0 + lane] = factor * emissive[c][f0 + lane];
           }
         }
       }

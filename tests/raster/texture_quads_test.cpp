@@ -1,0 +1,154 @@
+// Texture2D::sample_quads (a batch of quads and reads per call) against Texture2D::sample_quad
+// quad by quad and read by read: the same values bit for bit and the same texel trace, for 8-bit
+// linear reads (every mip mode, wrap, LOD bias, block-compressed and tiny levels), reads that
+// take the general path (huge and non-finite coordinates) and other samplers, on every SIMD target.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "raster/cell_raster.h"
+#include "raster/texel_trace.h"
+#include "raster/texture.h"
+
+namespace ontile {
+namespace {
+
+constexpr int kQuads = 16;
+constexpr int kFragments = kQuads * 4;
+
+struct AutomaticTargetOnExit {
+  ~AutomaticTargetOnExit() { force_simd_target(""); }
+};
+
+std::vector<uint8_t> random_bytes(std::mt19937& rng, int w, int h) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(w) * h * 4);
+  for (auto& b : bytes) b = static_cast<uint8_t>(rng());
+  return bytes;
+}
+
+SamplerDesc random_sampler(std::mt19937& rng, bool linear) {
+  const WrapMode wraps[] = {WrapMode::Repeat, WrapMode::ClampToEdge, WrapMode::MirroredRepeat};
+  const MipmapMode mips[] = {MipmapMode::Linear, MipmapMode::Linear, MipmapMode::Nearest, MipmapMode::None};
+  SamplerDesc s;
+  s.mag_filter = s.min_filter = linear ? FilterMode::Linear : FilterMode::Nearest;
+  s.mipmap_mode = mips[rng() % 4];
+  s.wrap_u = wraps[rng() % 3];
+  s.wrap_v = wraps[rng() % 3];
+  s.lod_bias = rng() % 3 == 0 ? std::uniform_real_distribution<float>(-1.5f, 1.5f)(rng) : 0.0f;
+  return s;
+}
+
+TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
+  std::mt19937 rng(9100);
+  const std::shared_ptr<const Texture2D> textures[] = {
+      Texture2D::from_rgba8(64, 64, random_bytes(rng, 64, 64), true, "srgb pot"),
+      Texture2D::from_rgba8(45, 29, random_bytes(rng, 45, 29), false, "unorm npot"),
+      Texture2D::from_rgba8(3, 2, random_bytes(rng, 3, 2), false, "tiny"),
+      Texture2D::from_rgba8(40, 24, random_bytes(rng, 40, 24), true, "astc", TextureCompression::Astc4x4),
+      Texture2D::from_rgba8(33, 17, random_bytes(rng, 33, 17), false, "etc2", TextureCompression::Etc2),
+      Texture2D::from_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f), "float"),
+  };
+  constexpr int kTextures = static_cast<int>(std::size(textures));
+  const float inf = std::numeric_limits<float>::infinity();
+  const float odd[] = {-0.0f, std::nanf(""), inf, -inf, 3e7f, -1e30f, 2e9f};
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  int checked = 0;
+  for (int round = 0; round < 600; ++round) {
+    force_simd_target(targets[round % targets.size()]);
+    const int read_count = 1 + static_cast<int>(rng() % 5);  // 5: more than a batch call takes
+    SamplerDesc samplers[5];
+    const Texture2D* read_textures[5];
+    for (int r = 0; r < read_count; ++r) {
+      // Mostly 8-bit linear reads (the batched path); now and then a nearest or float read.
+      read_textures[r] = textures[rng() % (round % 7 == 0 ? kTextures : kTextures - 1)].get();
+      samplers[r] = random_sampler(rng, round % 11 != 0);
+    }
+    const int quads = 1 + static_cast<int>(rng() % kQuads);
+    // Quads of a scale from magnified to far minified, with random offsets and a few odd values.
+    const float scale = std::exp2(std::uniform_real_distribution<float>(-9.0f, 2.0f)(rng));
+    float u[kFragments], v[kFragments];
+    for (int q = 0; q < quads; ++q) {
+      const float u0 = std::uniform_real_distribution<float>(-1.5f, 2.5f)(rng);
+      const float v0 = std::uniform_real_distribution<float>(-1.5f, 2.5f)(rng);
+      for (int lane = 0; lane < 4; ++lane) {
+        u[q * 4 + lane] = u0 + scale * static_cast<float>(lane & 1) * (0.5f + static_cast<float>(rng() % 4));
+        v[q * 4 + lane] = v0 + scale * static_cast<float>(lane >> 1) * (0.5f + static_cast<float>(rng() % 4));
+        if (round % 5 == 4 && rng() % 8 == 0) (rng() % 2 ? u : v)[q * 4 + lane] = odd[rng() % std::size(odd)];
+      }
+    }
+    std::vector<uint64_t> expected_trace{7}, trace{7};  // a granule before: merges count too
+    float expected[5][4][kFragments], out[5][4][kFragments];
+    {
+      const TexelTraceScope scope(&expected_trace);
+      for (int q = 0; q < quads; ++q) {
+        const glm::vec2 uv[4] = {{u[q * 4], v[q * 4]}, {u[q * 4 + 1], v[q * 4 + 1]},
+                                 {u[q * 4 + 2], v[q * 4 + 2]}, {u[q * 4 + 3], v[q * 4 + 3]}};
+        for (int r = 0; r < read_count; ++r) {
+          glm::vec4 texel[4];
+          read_textures[r]->sample_quad(samplers[r], uv, texel);
+          for (int lane = 0; lane < 4; ++lane) {
+            for (int c = 0; c < 4; ++c) expected[r][c][q * 4 + lane] = texel[lane][c];
+          }
+        }
+      }
+    }
+    {
+      Texture2D::QuadRead reads[5];
+      for (int r = 0; r < read_count; ++r) {
+        reads[r] = {read_textures[r], &samplers[r], {out[r][0], out[r][1], out[r][2], out[r][3]}};
+      }
+      const TexelTraceScope scope(&trace);
+      Texture2D::sample_quads(reads, read_count, u, v, quads);
+    }
+    ASSERT_EQ(trace, expected_trace) << "round " << round;
+    for (int r = 0; r < read_count; ++r) {
+      for (int f = 0; f < quads * 4; ++f) {
+        for (int c = 0; c < 4; ++c) {
+          ASSERT_EQ(std::bit_cast<uint32_t>(out[r][c][f]), std::bit_cast<uint32_t>(expected[r][c][f]))
+              << "round " << round << " read " << r << " fragment " << f << " channel " << c;
+        }
+      }
+    }
+    checked += quads * read_count;
+  }
+  EXPECT_GT(checked, 600 * 8);
+}
+
+// Without a trace scope nothing is recorded and the values are the same.
+TEST(TextureQuads, UntracedBatchesGiveTheSameValues) {
+  std::mt19937 rng(77);
+  const auto texture = Texture2D::from_rgba8(32, 32, random_bytes(rng, 32, 32), true, "t");
+  SamplerDesc sampler;
+  float u[kFragments], v[kFragments];
+  for (int f = 0; f < kFragments; ++f) {
+    u[f] = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng) + 0.01f * static_cast<float>(f & 1);
+    v[f] = std::uniform_real_distribution<float>(0.0f, 1.0f)(rng) + 0.03f * static_cast<float>(f >> 1 & 1);
+  }
+  float traced[4][kFragments], untraced[4][kFragments];
+  const Texture2D::QuadRead traced_read{texture.get(), &sampler, {traced[0], traced[1], traced[2], traced[3]}};
+  const Texture2D::QuadRead untraced_read{texture.get(), &sampler,
+                                          {untraced[0], untraced[1], untraced[2], untraced[3]}};
+  std::vector<uint64_t> trace;
+  {
+    const TexelTraceScope scope(&trace);
+    Texture2D::sample_quads(&traced_read, 1, u, v, kQuads);
+  }
+  Texture2D::sample_quads(&untraced_read, 1, u, v, kQuads);
+  EXPECT_FALSE(trace.empty());
+  for (int c = 0; c < 4; ++c) {
+    for (int f = 0; f < kFragments; ++f) {
+      ASSERT_EQ(std::bit_cast<uint32_t>(traced[c][f]), std::bit_cast<uint32_t>(untraced[c][f]));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ontile
