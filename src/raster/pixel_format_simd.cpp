@@ -170,13 +170,34 @@ HWY_INLINE hn::Vec<DI> half_value_bits(DI di, hn::Vec<DI> code) {
   return hn::Or(sign, result);
 }
 
+// F16C, on every x86 target from AVX2 up, converts binary16 with IEEE round to nearest even
+// (an immediate rounding mode, not MXCSR) and widens exactly: for every float that is not a NaN
+// and every code that is not a NaN it gives the bits of the integer path above (all 2^32 floats
+// and 65536 codes were compared; PixelRows.* checks ties, subnormals and overflow on every
+// target). NaNs keep the integer path, whose payload rule the hardware does not follow: a
+// vector holding one is converted wholly by the integer path.
+#undef ONTILE_HALF_F16C
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2 && !defined(HWY_DISABLE_F16C)
+#define ONTILE_HALF_F16C 1
+#else
+#define ONTILE_HALF_F16C 0
+#endif
+
 void QuantizeHalfKernel(float* values, int count) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const size_t n = hn::Lanes(df);
   size_t i = 0;
   for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    const auto v = hn::LoadU(df, values + i);
+#if ONTILE_HALF_F16C
+    if (hn::AllFalse(df, hn::IsNaN(v))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::PromoteTo(df, hn::DemoteTo(df16, v)), df, values + i);
+      continue;
+    }
+#endif
+    const auto code = half_code(di, hn::BitCast(di, v));
     hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
@@ -195,7 +216,16 @@ void EncodeHalfKernel(const float* values, int count, uint8_t* dst) {
   // Codes are 0..0xFFFF, so the saturating demotion keeps them; stored in host order, which is
   // the scalar path's little-endian (asserted below).
   for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    const auto v = hn::LoadU(df, values + i);
+#if ONTILE_HALF_F16C
+    if (hn::AllFalse(df, hn::IsNaN(v))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::BitCast(d16, hn::DemoteTo(df16, v)), d16,
+                 reinterpret_cast<uint16_t*>(dst + 2 * i));
+      continue;
+    }
+#endif
+    const auto code = half_code(di, hn::BitCast(di, v));
     hn::StoreU(hn::DemoteTo(d16, code), d16, reinterpret_cast<uint16_t*>(dst + 2 * i));
   }
   for (; i < static_cast<size_t>(count); ++i) {
@@ -213,6 +243,15 @@ void DecodeHalfKernel(const uint8_t* src, int count, float* values) {
   size_t i = 0;
   for (; i + n <= static_cast<size_t>(count); i += n) {
     const auto code = hn::PromoteTo(di, hn::LoadU(d16, reinterpret_cast<const uint16_t*>(src + 2 * i)));
+#if ONTILE_HALF_F16C
+    // NaN codes: exponent all ones and a non-zero mantissa, i.e. |code| above 0x7C00.
+    if (hn::AllFalse(di, hn::Gt(hn::And(code, hn::Set(di, 0x7FFF)), hn::Set(di, 0x7C00)))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::PromoteTo(df, hn::LoadU(df16, reinterpret_cast<const hwy::float16_t*>(src + 2 * i))),
+                 df, values + i);
+      continue;
+    }
+#endif
     hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
