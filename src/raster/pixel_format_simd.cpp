@@ -63,7 +63,20 @@ void EncodeRgb10a2Kernel(const float* rgba, int pixels, uint8_t* dst) {
       codes[i] = static_cast<int32_t>(float_to_unorm(values[i], i % 4 == 3 ? 2 : 10));
     }
     uint8_t* out = dst + 4 * static_cast<size_t>(first);
-    for (int p = 0; p < chunk; ++p) {
+    // Pixels' codes deinterleaved into R, G, B, A lanes and packed as R | G << 10 | B << 20 |
+    // A << 30, stored in host order (little-endian, asserted below) as the scalar bytes are.
+    const hn::ScalableTag<uint32_t> du;
+    const size_t pixels_per_vector = hn::Lanes(du);
+    const uint32_t* unsigned_codes = reinterpret_cast<const uint32_t*>(codes);
+    int p = 0;
+    for (; p + static_cast<int>(pixels_per_vector) <= chunk; p += static_cast<int>(pixels_per_vector)) {
+      hn::Vec<decltype(du)> r, g, b, a;
+      hn::LoadInterleaved4(du, unsigned_codes + 4 * p, r, g, b, a);
+      const auto word = hn::Or(hn::Or(r, hn::ShiftLeft<10>(g)),
+                               hn::Or(hn::ShiftLeft<20>(b), hn::ShiftLeft<30>(a)));
+      hn::StoreU(word, du, reinterpret_cast<uint32_t*>(out + 4 * p));
+    }
+    for (; p < chunk; ++p) {
       const uint32_t word = static_cast<uint32_t>(codes[4 * p]) |
                             (static_cast<uint32_t>(codes[4 * p + 1]) << 10) |
                             (static_cast<uint32_t>(codes[4 * p + 2]) << 20) |
@@ -73,35 +86,38 @@ void EncodeRgb10a2Kernel(const float* rgba, int pixels, uint8_t* dst) {
   }
 }
 
+// unorm_to_float of 10- and 2-bit codes as one float division: code / max rounded once to
+// float equals the double quotient rounded to float for every code (checked for all 1028 codes
+// by PixelRows.*, which decodes every code), so planar float lanes give the scalar bits.
 void DecodeRgb10a2Kernel(const uint8_t* src, int pixels, float* rgba) {
-  const hn::ScalableTag<double> dd;
-  const hn::Rebind<float, decltype(dd)> df;
-  const hn::Rebind<int32_t, decltype(dd)> di;
-  const size_t n = hn::Lanes(dd);
-  alignas(64) int32_t codes[4 * kPackedChunkPixels];
-  for (int first = 0; first < pixels; first += kPackedChunkPixels) {
-    const int chunk = std::min(kPackedChunkPixels, pixels - first);
-    const uint8_t* in = src + 4 * static_cast<size_t>(first);
-    for (int p = 0; p < chunk; ++p) {
-      const uint32_t word = in[4 * p] | (uint32_t{in[4 * p + 1]} << 8) |
-                            (uint32_t{in[4 * p + 2]} << 16) | (uint32_t{in[4 * p + 3]} << 24);
-      codes[4 * p] = static_cast<int32_t>(word & 0x3FFu);
-      codes[4 * p + 1] = static_cast<int32_t>((word >> 10) & 0x3FFu);
-      codes[4 * p + 2] = static_cast<int32_t>((word >> 20) & 0x3FFu);
-      codes[4 * p + 3] = static_cast<int32_t>(word >> 30);
-    }
-    float* values = rgba + 4 * static_cast<size_t>(first);
-    const size_t count = 4 * static_cast<size_t>(chunk);
-    size_t i = 0;
-    // unorm_to_float: the code over the maximum in double (exact IEEE division), then float.
-    for (; i + n <= count && n <= 16; i += n) {
-      const auto code = hn::PromoteTo(dd, hn::LoadU(di, codes + i));
-      const auto value = hn::Div(code, hn::LoadU(dd, kRgb10a2MaxCodes + i % 4));
-      hn::StoreU(hn::DemoteTo(df, value), df, values + i);
-    }
-    for (; i < count; ++i) {
-      values[i] = unorm_to_float(static_cast<uint32_t>(codes[i]), i % 4 == 3 ? 2 : 10);
-    }
+  const hn::ScalableTag<uint32_t> du;
+  const hn::Rebind<float, decltype(du)> df;
+  const hn::Rebind<int32_t, decltype(du)> di;
+  const size_t n = hn::Lanes(du);
+  const auto ten_bits = hn::Set(du, 0x3FFu);
+  const auto max10 = hn::Set(df, 1023.0f);
+  const auto max2 = hn::Set(df, 3.0f);
+  const auto to_float = [&](hn::Vec<decltype(du)> code) {
+    return hn::ConvertTo(df, hn::BitCast(di, code));  // codes below 2^10: exact
+  };
+  int p = 0;
+  for (; p + static_cast<int>(n) <= pixels; p += static_cast<int>(n)) {
+    const auto word = hn::LoadU(du, reinterpret_cast<const uint32_t*>(src + 4 * static_cast<size_t>(p)));
+    const auto r = hn::Div(to_float(hn::And(word, ten_bits)), max10);
+    const auto g = hn::Div(to_float(hn::And(hn::ShiftRight<10>(word), ten_bits)), max10);
+    const auto b = hn::Div(to_float(hn::And(hn::ShiftRight<20>(word), ten_bits)), max10);
+    const auto a = hn::Div(to_float(hn::ShiftRight<30>(word)), max2);
+    hn::StoreInterleaved4(r, g, b, a, df, rgba + 4 * static_cast<size_t>(p));
+  }
+  for (; p < pixels; ++p) {
+    const uint8_t* in = src + 4 * static_cast<size_t>(p);
+    const uint32_t word = in[0] | (uint32_t{in[1]} << 8) | (uint32_t{in[2]} << 16) |
+                          (uint32_t{in[3]} << 24);
+    float* out = rgba + 4 * static_cast<size_t>(p);
+    out[0] = unorm_to_float(word & 0x3FFu, 10);
+    out[1] = unorm_to_float((word >> 10) & 0x3FFu, 10);
+    out[2] = unorm_to_float((word >> 20) & 0x3FFu, 10);
+    out[3] = unorm_to_float(word >> 30, 2);
   }
 }
 
@@ -154,13 +170,34 @@ HWY_INLINE hn::Vec<DI> half_value_bits(DI di, hn::Vec<DI> code) {
   return hn::Or(sign, result);
 }
 
+// F16C, on every x86 target from AVX2 up, converts binary16 with IEEE round to nearest even
+// (an immediate rounding mode, not MXCSR) and widens exactly: for every float that is not a NaN
+// and every code that is not a NaN it gives the bits of the integer path above (all 2^32 floats
+// and 65536 codes were compared; PixelRows.* checks ties, subnormals and overflow on every
+// target). NaNs keep the integer path, whose payload rule the hardware does not follow: a
+// vector holding one is converted wholly by the integer path.
+#undef ONTILE_HALF_F16C
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX2 && !defined(HWY_DISABLE_F16C)
+#define ONTILE_HALF_F16C 1
+#else
+#define ONTILE_HALF_F16C 0
+#endif
+
 void QuantizeHalfKernel(float* values, int count) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const size_t n = hn::Lanes(df);
   size_t i = 0;
   for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    const auto v = hn::LoadU(df, values + i);
+#if ONTILE_HALF_F16C
+    if (hn::AllFalse(df, hn::IsNaN(v))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::PromoteTo(df, hn::DemoteTo(df16, v)), df, values + i);
+      continue;
+    }
+#endif
+    const auto code = half_code(di, hn::BitCast(di, v));
     hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
@@ -179,7 +216,16 @@ void EncodeHalfKernel(const float* values, int count, uint8_t* dst) {
   // Codes are 0..0xFFFF, so the saturating demotion keeps them; stored in host order, which is
   // the scalar path's little-endian (asserted below).
   for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = half_code(di, hn::BitCast(di, hn::LoadU(df, values + i)));
+    const auto v = hn::LoadU(df, values + i);
+#if ONTILE_HALF_F16C
+    if (hn::AllFalse(df, hn::IsNaN(v))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::BitCast(d16, hn::DemoteTo(df16, v)), d16,
+                 reinterpret_cast<uint16_t*>(dst + 2 * i));
+      continue;
+    }
+#endif
+    const auto code = half_code(di, hn::BitCast(di, v));
     hn::StoreU(hn::DemoteTo(d16, code), d16, reinterpret_cast<uint16_t*>(dst + 2 * i));
   }
   for (; i < static_cast<size_t>(count); ++i) {
@@ -197,6 +243,15 @@ void DecodeHalfKernel(const uint8_t* src, int count, float* values) {
   size_t i = 0;
   for (; i + n <= static_cast<size_t>(count); i += n) {
     const auto code = hn::PromoteTo(di, hn::LoadU(d16, reinterpret_cast<const uint16_t*>(src + 2 * i)));
+#if ONTILE_HALF_F16C
+    // NaN codes: exponent all ones and a non-zero mantissa, i.e. |code| above 0x7C00.
+    if (hn::AllFalse(di, hn::Gt(hn::And(code, hn::Set(di, 0x7FFF)), hn::Set(di, 0x7C00)))) {
+      const hn::Rebind<hwy::float16_t, decltype(df)> df16;
+      hn::StoreU(hn::PromoteTo(df, hn::LoadU(df16, reinterpret_cast<const hwy::float16_t*>(src + 2 * i))),
+                 df, values + i);
+      continue;
+    }
+#endif
     hn::StoreU(hn::BitCast(df, half_value_bits(di, code)), df, values + i);
   }
   for (; i < static_cast<size_t>(count); ++i) {
@@ -311,17 +366,28 @@ void QuantizeSrgb8Kernel(float* values, int count) {
   for (; i < static_cast<size_t>(count); ++i) values[i] = t.decode[linear_to_srgb8(values[i])];
 }
 
-void EncodeSrgb8Kernel(const float* values, int count, uint8_t* dst) {
+// RGBA8_SRGB pixels: R, G, B through linear_to_srgb8, alpha (always linear) through
+// float_to_unorm(a, 8), each on its own deinterleaved lanes.
+void EncodeSrgb8AlphaKernel(const float* rgba, int pixels, uint8_t* dst) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const hn::Rebind<uint8_t, decltype(di)> d8;
   const size_t n = hn::Lanes(df);
   const Srgb8Tables& t = srgb8_tables();
-  size_t i = 0;
-  for (; i + n <= static_cast<size_t>(count); i += n) {
-    hn::StoreU(hn::DemoteTo(d8, srgb8_code(df, hn::LoadU(df, values + i), t)), d8, dst + i);
+  int p = 0;
+  for (; p + static_cast<int>(n) <= pixels; p += static_cast<int>(n)) {
+    hn::Vec<decltype(df)> r, g, b, a;
+    hn::LoadInterleaved4(df, rgba + 4 * static_cast<size_t>(p), r, g, b, a);
+    hn::StoreInterleaved4(hn::DemoteTo(d8, srgb8_code(df, r, t)), hn::DemoteTo(d8, srgb8_code(df, g, t)),
+                          hn::DemoteTo(d8, srgb8_code(df, b, t)), hn::DemoteTo(d8, unorm8_code(df, a)),
+                          d8, dst + 4 * static_cast<size_t>(p));
   }
-  for (; i < static_cast<size_t>(count); ++i) dst[i] = linear_to_srgb8(values[i]);
+  for (; p < pixels; ++p) {
+    const float* in = rgba + 4 * static_cast<size_t>(p);
+    uint8_t* out = dst + 4 * static_cast<size_t>(p);
+    for (int c = 0; c < 3; ++c) out[c] = linear_to_srgb8(in[c]);
+    out[3] = static_cast<uint8_t>(float_to_unorm(in[3], 8));
+  }
 }
 
 void DecodeTable8Kernel(const uint8_t* src, int count, const float* table, float* dst) {
@@ -347,7 +413,7 @@ namespace ontile {
 HWY_EXPORT(QuantizeUnormKernel);
 HWY_EXPORT(EncodeUnorm8Kernel);
 HWY_EXPORT(QuantizeSrgb8Kernel);
-HWY_EXPORT(EncodeSrgb8Kernel);
+HWY_EXPORT(EncodeSrgb8AlphaKernel);
 HWY_EXPORT(DecodeTable8Kernel);
 HWY_EXPORT(EncodeRgb10a2Kernel);
 HWY_EXPORT(QuantizeHalfKernel);
@@ -364,8 +430,8 @@ void quantize_srgb8_simd(float* values, int count) {
 void encode_unorm8_simd(const float* values, int count, uint8_t* dst) {
   HWY_DYNAMIC_DISPATCH(EncodeUnorm8Kernel)(values, count, dst);
 }
-void encode_srgb8_simd(const float* values, int count, uint8_t* dst) {
-  HWY_DYNAMIC_DISPATCH(EncodeSrgb8Kernel)(values, count, dst);
+void encode_srgb8_alpha_simd(const float* rgba, int pixels, uint8_t* dst) {
+  HWY_DYNAMIC_DISPATCH(EncodeSrgb8AlphaKernel)(rgba, pixels, dst);
 }
 void decode_table8_simd(const uint8_t* src, int count, const float* table, float* dst) {
   HWY_DYNAMIC_DISPATCH(DecodeTable8Kernel)(src, count, table, dst);

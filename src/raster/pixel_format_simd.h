@@ -12,8 +12,9 @@ void quantize_unorm_simd(float* values, int count, int bits);
 void quantize_srgb8_simd(float* values, int count);
 // dst[i] = float_to_unorm(values[i], 8).
 void encode_unorm8_simd(const float* values, int count, uint8_t* dst);
-// dst[i] = linear_to_srgb8(values[i]).
-void encode_srgb8_simd(const float* values, int count, uint8_t* dst);
+// RGBA8_SRGB pixels (4 floats each): dst[4 p + c] = linear_to_srgb8 for R, G, B and
+// float_to_unorm(a, 8) for the linear alpha.
+void encode_srgb8_alpha_simd(const float* rgba, int pixels, uint8_t* dst);
 // dst[i] = table[src[i]] (a 256-entry decode table).
 void decode_table8_simd(const uint8_t* src, int count, const float* table, float* dst);
 // binary16: values[i] = quantize_half(values[i]); dst gets float_to_half_bits(values[i]) as 2

@@ -9,22 +9,6 @@
 #include "raster/srgb8_tables.h"
 
 namespace ontile {
-namespace {
-
-// dst[4 i + 3] = float_to_unorm(src[i].w, 8), alphas gathered in chunks for the SIMD encoder.
-void encode_linear_alpha8(const glm::vec4* src, int count, uint8_t* dst) {
-  constexpr int kChunk = 64;
-  float alpha[kChunk];
-  uint8_t code[kChunk];
-  for (int first = 0; first < count; first += kChunk) {
-    const int n = count - first < kChunk ? count - first : kChunk;
-    for (int i = 0; i < n; ++i) alpha[i] = src[first + i].w;
-    encode_unorm8_simd(alpha, n, code);
-    for (int i = 0; i < n; ++i) dst[4 * (first + i) + 3] = code[i];
-  }
-}
-
-}  // namespace
 
 void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
   switch (format) {
@@ -77,8 +61,7 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
       encode_unorm8_simd(values, 4 * count, dst);
       return;
     case PixelFormat::RGBA8_SRGB:
-      encode_srgb8_simd(values, 4 * count, dst);
-      encode_linear_alpha8(src, count, dst);  // alpha is always linear
+      encode_srgb8_alpha_simd(values, count, dst);  // alpha is always linear
       return;
     case PixelFormat::RGBA32_FLOAT:
       std::memcpy(dst, values, sizeof(glm::vec4) * static_cast<size_t>(count));

@@ -152,6 +152,62 @@ TEST(PixelRows, MatchPerPixelConversionsOnEveryTarget) {
   }
 }
 
+// binary16 rows around every code: each half value, the floats one step either side of it and
+// of the midpoint to the next code (ties), both signs, and every code decoded, NaNs included,
+// on every target (the x86 targets from AVX2 up convert with F16C, the others with integers).
+TEST(PixelRows, HalfFloatRowsMatchAroundEveryCode) {
+  std::vector<float> values;
+  std::vector<uint8_t> codes;
+  for (uint32_t c = 0; c < 0x10000; ++c) {
+    codes.push_back(static_cast<uint8_t>(c));
+    codes.push_back(static_cast<uint8_t>(c >> 8));
+    const float v = half_bits_to_float(static_cast<uint16_t>(c));
+    if (std::isnan(v)) continue;
+    values.push_back(v);
+    values.push_back(std::nextafter(v, -1e30f));
+    values.push_back(std::nextafter(v, 1e30f));
+    if ((c & 0x7FFF) >= 0x7BFF) continue;  // the largest finite magnitude and Inf: no next code
+    const float next = half_bits_to_float(static_cast<uint16_t>(c + 1));
+    const float mid = static_cast<float>((static_cast<double>(v) + next) / 2.0);
+    for (const float m : {std::nextafter(mid, v), mid, std::nextafter(mid, next)}) values.push_back(m);
+  }
+  values.push_back(std::numeric_limits<float>::quiet_NaN());  // a NaN in some vectors only
+  while (values.size() % 4 != 3) values.push_back(0.5f);      // a run that no width divides
+  const int count = static_cast<int>(values.size());
+  const int code_count = static_cast<int>(codes.size() / 2);
+  const AutomaticTargetOnExit restore;
+  for (const std::string& target : simd_targets()) {
+    SCOPED_TRACE(target);
+    force_simd_target(target);
+    std::vector<float> quantized = values;
+    std::vector<float> zeros(count, 0.0f);
+    std::vector<float> g = zeros, b = zeros, a = zeros;
+    quantize_pixels(PixelFormat::RGBA16_FLOAT, quantized.data(), g.data(), b.data(), a.data(), count);
+    std::vector<glm::vec4> pixels(count);
+    for (int i = 0; i < count; ++i) pixels[i] = glm::vec4(values[i], 0.0f, 0.0f, 0.0f);
+    std::vector<uint8_t> row(static_cast<size_t>(count) * 8);
+    encode_pixels(PixelFormat::RGBA16_FLOAT, pixels.data(), count, row.data());
+    for (int i = 0; i < count; ++i) {
+      const uint16_t expected = float_to_half_bits(values[i]);
+      const float expected_value = half_bits_to_float(expected);
+      ASSERT_EQ(0, std::memcmp(&expected_value, &quantized[i], sizeof(float))) << "value " << values[i];
+      ASSERT_EQ(expected, static_cast<uint16_t>(row[8 * i] | (row[8 * i + 1] << 8))) << "value " << values[i];
+    }
+    // Every code as the R channel of RGBA16F pixels (G, B, A zero).
+    std::vector<uint8_t> encoded(static_cast<size_t>(code_count) * 8, 0);
+    for (int c = 0; c < code_count; ++c) {
+      encoded[8 * c] = codes[2 * c];
+      encoded[8 * c + 1] = codes[2 * c + 1];
+    }
+    std::vector<glm::vec4> decoded(code_count);
+    decode_pixels(PixelFormat::RGBA16_FLOAT, encoded.data(), code_count, decoded.data());
+    for (int c = 0; c < code_count; ++c) {
+      const float expected = half_bits_to_float(static_cast<uint16_t>(c));
+      ASSERT_EQ(0, std::memcmp(&expected, &decoded[c].x, sizeof(float))) << "code " << c;
+    }
+  }
+}
+
 // Every byte of every 8-bit channel decodes and re-encodes to itself through the rows.
 TEST(PixelRows, EightBitRoundTripIsExact) {
   std::vector<uint8_t> bytes(256 * 4);

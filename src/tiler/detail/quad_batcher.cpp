@@ -103,7 +103,7 @@ void QuadBatcher::flush() {
     const int invocations = ctx.per_sample ? ctx.pattern.count : 1;
     for (int inv = 0; inv < invocations; ++inv) shade_invocation(inv);
   }
-  if (ctx.pattern.count == 1 && !ctx.late_z && opaque_writes_ && !ctx.fragments) {
+  if (ctx.pattern.count == 1 && opaque_writes_ && !ctx.fragments) {
     write_back_single_sample();
   } else {
     for (int t = 0; t < triangle_count_; ++t) {
@@ -307,15 +307,19 @@ void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
   }
 }
 
-// write_back for the common case, the batch at once: one sample per pixel, depth already
-// written by early Z, outputs already quantised per batch. Quads whose four lanes all pass are
-// copied to tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never
-// share a pixel, so within a triangle the order of writes does not matter; a later triangle's
-// quads may overwrite an earlier one's, so full quads are stored before the next triangle's.
+// write_back for the common case, the batch at once: one sample per pixel, outputs already
+// quantised per batch. Depth was written by early Z, or (late Z: functors that may discard, such
+// as deferred lighting) is written here for the samples that passed the depth test and were not
+// discarded, with write_back's rejection count. Quads whose four lanes all pass are copied to
+// tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never share a pixel,
+// so within a triangle the order of writes does not matter; a later triangle's quads may
+// overwrite an earlier one's, so full quads are stored before the next triangle's.
 void QuadBatcher::write_back_single_sample() {
   const TriangleContext& ctx = *ctx_;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const BatchOutput& out = *outputs_[0];
+  const bool late_z = ctx.late_z;
+  const bool late_depth_write = late_z && ctx.depth_write;
   int full_quads = 0;
   const auto store_full = [&] {
     for (size_t k = 0; k < outputs.size(); ++k) {
@@ -332,10 +336,25 @@ void QuadBatcher::write_back_single_sample() {
     for (int q = triangles_[t].first_quad; q < q_end; ++q) {
       const QueuedQuad& quad = queue_[q];
       const uint8_t lanes = lanes_of(quad.passing);
+      if (late_z) {
+        counters_->fragments_depth_rejected += lane_count(lanes_of(quad.coverage) & ~lanes);
+      }
       counters_->samples_written += lane_count(lanes);
-      if (!lanes || !ctx.write_color) continue;
-      const int first = slot_[0][q] * kQuadLanes;
+      if (!lanes) continue;
       const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
+      if (late_depth_write) {
+        // The cell's depth at each passing lane, as rasterize_cells computed it.
+        const float* z = cell_depth_ + static_cast<size_t>(quad.cell) * kMaxSamples * kCellPixels +
+                         (quad.qy - quad.cell_y) * kCellSizePx + (quad.qx - quad.cell_x);
+        float* depth = memory_->depth_plane() + pixel;
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          if (!((lanes >> lane) & 1u)) continue;
+          depth[static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1)] =
+              z[(lane >> 1) * kCellSizePx + (lane & 1)];
+        }
+      }
+      if (!ctx.write_color) continue;
+      const int first = slot_[0][q] * kQuadLanes;
       if (lanes == 0xF) {
         full_first_fragment_[full_quads] = first;
         full_pixel_[full_quads] = static_cast<uint32_t>(pixel);

@@ -3,6 +3,7 @@
 // no per-quad queue entries, lane masks, slots or per-fragment interpolation inputs, and written
 // back without per-quad checks. Every value and counter is the one flush() would produce for the
 // same quads queued by add().
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -51,32 +52,41 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   // Locals, not the members or the references: the stores below are ints and floats too.
   const int x0 = rect.x0, row_end = rect.x0 + rect.width, width = memory_->width();
   const CellState* const cells = cells_;
-  int x = qx, y = qy;
-  int cell_row = (y - first_cell_y) / kCellSizePx * cells_x;  // cell index of the row's first cell
-  int oy = (y - first_cell_y) % kCellSizePx;                   // quad row inside its cell
-  uint32_t pixel = static_cast<uint32_t>((y - rect.y0) * width + (x - x0));
+  // What every quad of a whole batch shares (the queued path and discards overwrite these).
   for (int i = 0; i < kBatchQuads; ++i) {
-    const int lx = x - first_cell_x;  // >= 0: the cells grid starts at or left of the tile
-    const CellPlane* planes = cells[cell_row + static_cast<unsigned>(lx) / kCellSizePx].planes;
-    b.quad_x_px[i] = x;
-    b.quad_y_px[i] = y;
     b.lane_mask[i] = 0xF;
     b.quad_primitive_id[i] = primitive_id;
-    quad_ox_[i] = static_cast<int32_t>(static_cast<unsigned>(lx) % kCellSizePx);
-    quad_oy_[i] = oy;
-    quad_l1_[i] = planes[0].origin;
-    quad_l2_[i] = planes[1].origin;
-    quad_z_[i] = planes[2].origin;
     full_first_fragment_[i] = i * kQuadLanes;
-    full_pixel_[i] = pixel;
-    x += 2;
-    pixel += 2;
+  }
+  // The batch's quads row segment by row segment: within a quad row x, the tile pixel and the
+  // offset in the cell advance by 2 per quad, and every 4 quads share a cell's planes.
+  int x = qx, y = qy;
+  for (int i = 0; i < kBatchQuads;) {
+    const int quads = std::min(kBatchQuads - i, (row_end - x) / 2);
+    // x from the cells' left edge (at or left of the tile); the row's first cell; the quad row
+    // inside its cell.
+    const unsigned lx = static_cast<unsigned>(x - first_cell_x);
+    const int cell_row = (y - first_cell_y) / kCellSizePx * cells_x;
+    const int oy = (y - first_cell_y) % kCellSizePx;
+    const uint32_t pixel = static_cast<uint32_t>((y - rect.y0) * width + (x - x0));
+    for (int k = 0; k < quads; ++k) {
+      b.quad_x_px[i + k] = x + 2 * k;
+      b.quad_y_px[i + k] = y;
+      quad_ox_[i + k] = static_cast<int32_t>((lx + 2u * k) % kCellSizePx);
+      quad_oy_[i + k] = oy;
+      full_pixel_[i + k] = pixel + 2u * k;
+    }
+    for (int k = 0; k < quads; ++k) {
+      const CellPlane* planes = cells[cell_row + (lx + 2u * k) / kCellSizePx].planes;
+      quad_l1_[i + k] = planes[0].origin;
+      quad_l2_[i + k] = planes[1].origin;
+      quad_z_[i + k] = planes[2].origin;
+    }
+    i += quads;
+    x += 2 * quads;
     if (x == row_end) {  // the next quad row: two pixel rows down
       x = x0;
       y += 2;
-      pixel = static_cast<uint32_t>((y - rect.y0) * width);
-      cell_row = (y - first_cell_y) / kCellSizePx * cells_x;
-      oy = (y - first_cell_y) % kCellSizePx;
     }
   }
   qx = x;
