@@ -561,6 +561,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
     read.wrap_v = sampler.wrap_v;
     read.rgb_decode = decoders[r].rgb;
     read.alpha_decode = decoders[r].alpha;
+    read.trace_repeats = std::max(reads[r].fetches, 1);
     for (int c = 0; c < 4; ++c) read.out[c] = reads[r].out[c];
   }
   if (!all_linear8) {
@@ -570,7 +571,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
                                {u[f0 + 3], v[f0 + 3]}};
       for (int r = 0; r < read_count; ++r) {
         glm::vec4 texel[4];
-        reads[r].texture->sample_quad(*reads[r].sampler, uv, texel);
+        reads[r].texture->sample_quad(*reads[r].sampler, uv, texel, reads[r].fetches);
         for (int lane = 0; lane < 4; ++lane) {
           for (int c = 0; c < 4; ++c) reads[r].out[c][f0 + lane] = texel[lane][c];
         }
@@ -599,7 +600,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
     const std::vector<Level>& levels = reads[r].texture->levels_;
     const float lambda = quad_lambda(finite_uv, levels[0].width, levels[0].height, sampler.lod_bias);
     QuadSample8 job;
-    linear8_job(levels, decoders[r], sampler, finite_uv, lambda, 1, job);
+    linear8_job(levels, decoders[r], sampler, finite_uv, lambda, batch_reads[r].trace_repeats, job);
     glm::vec4 texel[4];
     sample_linear8_scalar(job, decoders[r], sampler, texel);
     for (int lane = 0; lane < 4; ++lane) {

@@ -168,16 +168,17 @@ class Texture2D {
   // filtered value, the same bits each time, is computed once.
   void sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4], glm::vec4 out[4],
                    int fetches = 1) const;
-  // One texture read of sample_quads: the texture, its sampler, and where fragment f's channel
-  // c goes (out[c][f]).
+  // One texture read of sample_quads: the texture, its sampler, where fragment f's channel c
+  // goes (out[c][f]), and sample_quad's `fetches` (identical sample instructions it stands for).
   struct QuadRead {
     const Texture2D* texture = nullptr;
     const SamplerDesc* sampler = nullptr;
     float* out[4] = {nullptr, nullptr, nullptr, nullptr};
+    int fetches = 1;
   };
   // sample_quad for quads q < quad_count, whose lane i is fragment f = 4 q + i at (u[f], v[f]),
   // and per quad for each of `reads` in order: the values and the texel trace of calling
-  // sample_quad(*read.sampler, uv) quad by quad and read by read, with the per-call dispatch
+  // sample_quad(*read.sampler, uv, read.fetches) quad by quad and read by read, with the per-call dispatch
   // done once per batch (8-bit linear samplers run on SIMD lanes a batch per call).
   static void sample_quads(const QuadRead* reads, int read_count, const float* u, const float* v,
                            int quad_count);

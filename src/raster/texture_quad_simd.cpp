@@ -119,7 +119,7 @@ struct TraceStaging {
 // level by level, each footprint as t00, t10, t01, t11, repeats of the previous granule skipped.
 // Granules are computed on 64-bit lanes for uncompressed 4-byte texels (every 8-bit texture not
 // block-compressed); block-compressed levels map each texel to its block's address. staging:
-// where a batch call gathers them (trace_repeats is 1 there), or null to append to in.trace.
+// where a batch call gathers them, or null to append to in.trace.
 void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], TraceStaging* staging) {
   alignas(32) uint64_t granule[2][4][kLanes];  // [level][tap][lane]
   const hn::CappedTag<uint64_t, kLanes> d64;
@@ -209,6 +209,18 @@ void record_trace(const QuadSample8& in, const int32_t taps[2][4][kLanes], Trace
   if (staging) {
     staging->count += kept_first + tail_count;
     staging->last = last;
+    // A repeated fetch: the first granule unless the trace ends in it, then the same tail. After
+    // a flush the copy may overlap the tail's old place, hence memmove before writing `first`.
+    const uint64_t* repeated_tail = tail;
+    for (int repeat = 1; repeat < in.trace_repeats; ++repeat) {
+      if (staging->count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging->flush(*in.trace);
+      const int kept = first != last;
+      uint64_t* const copy = staging->granules + 1 + staging->count;
+      std::memmove(copy + kept, repeated_tail, sizeof(uint64_t) * static_cast<size_t>(tail_count));
+      if (kept) copy[0] = first;
+      repeated_tail = copy + kept;
+      staging->count += kept + tail_count;
+    }
     return;
   }
   uint64_t previous = *in.last_granule;
@@ -340,6 +352,7 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
     jobs[r].alpha_decode = read.alpha_decode;
     jobs[r].trace = batch.trace;
     jobs[r].last_granule = batch.last_granule;
+    jobs[r].trace_repeats = read.trace_repeats;
   }
   TraceStaging staging;
   if (batch.trace) staging.last = *batch.last_granule;

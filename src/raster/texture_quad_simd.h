@@ -40,6 +40,7 @@ struct BatchRead8 {
   const float* rgb_decode = nullptr;
   const float* alpha_decode = nullptr;
   float* out[4] = {nullptr, nullptr, nullptr, nullptr};
+  int trace_repeats = 1;  // identical fetches the trace records (>= 1), as QuadSample8's
 };
 
 // Texture2D::sample_quads for reads that are all BatchRead8: quad q's lane i is fragment

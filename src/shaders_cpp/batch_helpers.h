@@ -6,12 +6,30 @@
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
+#include "raster/texture.h"
 
 namespace ontile {
 
 // Structure-of-arrays vectors over a batch's fragments: v[component][fragment].
 using BatchVec3 = float[3][kBatchFragments];
 using BatchVec4 = float[4][kBatchFragments];
+
+// A Texture2D::sample_quads read whose texels land in `texel` (texel[c][fragment]).
+inline Texture2D::QuadRead batch_texture_read(const Texture2D* texture, const SamplerDesc& sampler,
+                                              BatchVec4& texel, int fetches = 1) {
+  return {texture, &sampler, {texel[0], texel[1], texel[2], texel[3]}, fetches};
+}
+
+// colour[c][f] *= texel[c][f] for channels [0, channels) of the fragments of quads < quad_count
+// (the padding lanes after them keep their value).
+template <int kChannels>
+inline void batch_multiply_quads(float (&colour)[kChannels][kBatchFragments], int channels, int quad_count,
+                                 const BatchVec4& texel) {
+  const int fragments = quad_count * kQuadLanes;
+  for (int c = 0; c < channels; ++c) {
+    for (int f = 0; f < fragments; ++f) colour[c][f] *= texel[c][f];
+  }
+}
 
 // The four lanes of quad q of varyings [first, first + 1], for Texture2D::sample_quad.
 inline void batch_quad_uv(const FragmentBatch& batch, int first, int q, glm::vec2 uv[kQuadLanes]) {

@@ -1,7 +1,8 @@
 // Texture2D::sample_quads (a batch of quads and reads per call) against Texture2D::sample_quad
 // quad by quad and read by read: the same values bit for bit and the same texel trace, for 8-bit
 // linear reads (every mip mode, wrap, LOD bias, block-compressed and tiny levels), reads that
-// take the general path (huge and non-finite coordinates) and other samplers, on every SIMD target.
+// take the general path (huge and non-finite coordinates), other samplers and repeated fetches
+// (QuadRead::fetches, traced as often), on every SIMD target.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -47,6 +48,7 @@ SamplerDesc random_sampler(std::mt19937& rng, bool linear) {
 
 TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
   std::mt19937 rng(9100);
+  std::mt19937 fetch_rng(12);  // apart, so the other draws stay those of rng alone
   const std::shared_ptr<const Texture2D> textures[] = {
       Texture2D::from_rgba8(64, 64, random_bytes(rng, 64, 64), true, "srgb pot"),
       Texture2D::from_rgba8(45, 29, random_bytes(rng, 45, 29), false, "unorm npot"),
@@ -66,10 +68,12 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
     const int read_count = 1 + static_cast<int>(rng() % 5);  // 5: more than a batch call takes
     SamplerDesc samplers[5];
     const Texture2D* read_textures[5];
+    int fetches[5];
     for (int r = 0; r < read_count; ++r) {
       // Mostly 8-bit linear reads (the batched path); now and then a nearest or float read.
       read_textures[r] = textures[rng() % (round % 7 == 0 ? kTextures : kTextures - 1)].get();
       samplers[r] = random_sampler(rng, round % 11 != 0);
+      fetches[r] = fetch_rng() % 3 == 0 ? 2 + static_cast<int>(fetch_rng() % 3) : 1;
     }
     const int quads = 1 + static_cast<int>(rng() % kQuads);
     // Quads of a scale from magnified to far minified, with random offsets and a few odd values.
@@ -93,7 +97,7 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
                                  {u[q * 4 + 2], v[q * 4 + 2]}, {u[q * 4 + 3], v[q * 4 + 3]}};
         for (int r = 0; r < read_count; ++r) {
           glm::vec4 texel[4];
-          read_textures[r]->sample_quad(samplers[r], uv, texel);
+          read_textures[r]->sample_quad(samplers[r], uv, texel, fetches[r]);
           for (int lane = 0; lane < 4; ++lane) {
             for (int c = 0; c < 4; ++c) expected[r][c][q * 4 + lane] = texel[lane][c];
           }
@@ -103,7 +107,7 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
     {
       Texture2D::QuadRead reads[5];
       for (int r = 0; r < read_count; ++r) {
-        reads[r] = {read_textures[r], &samplers[r], {out[r][0], out[r][1], out[r][2], out[r][3]}};
+        reads[r] = {read_textures[r], &samplers[r], {out[r][0], out[r][1], out[r][2], out[r][3]}, fetches[r]};
       }
       const TexelTraceScope scope(&trace);
       Texture2D::sample_quads(reads, read_count, u, v, quads);

@@ -172,18 +172,16 @@ class UniversalAlphaClipShader final : public FragmentShader {
     surface_alpha(p_, batch, alpha);
     discard_below_cutoff(p_, batch, alpha, out);
   }
-  // The base colour's alpha of quads < quad_count, texture read per quad.
+  // The base colour's alpha of quads < quad_count, the batch's texels read in one call.
   static void surface_alpha(const UniversalSurfaceParams& p, const FragmentBatch& batch,
                             float alpha[kBatchFragments]) {
     for (int f = 0; f < batch.fragment_count(); ++f) alpha[f] = p.base_color.w;
     if constexpr (kBaseMap) {
-      for (int q = 0; q < batch.quad_count; ++q) {
-        glm::vec2 uv[kQuadLanes];
-        batch_quad_uv(batch, MeshVertexShader::kUv, q, uv);
-        glm::vec4 texel[kQuadLanes];
-        p.base_map->sample_quad(p.base_sampler, uv, texel);
-        for (int lane = 0; lane < kQuadLanes; ++lane) alpha[q * kQuadLanes + lane] *= texel[lane].w;
-      }
+      alignas(64) BatchVec4 texel;
+      const Texture2D::QuadRead read = batch_texture_read(p.base_map, p.base_sampler, texel);
+      Texture2D::sample_quads(&read, 1, batch.varyings[MeshVertexShader::kUv],
+                              batch.varyings[MeshVertexShader::kUv + 1], batch.quad_count);
+      for (int f = 0; f < batch.quad_count * kQuadLanes; ++f) alpha[f] *= texel[3][f];
     }
   }
   static void discard_below_cutoff(const UniversalSurfaceParams& p, const FragmentBatch& batch,

@@ -36,7 +36,8 @@ struct SurfaceBatch {
 // glTF 2.0 3.9.2-3.9.3: factors times textures (base colour and emission sRGB-decoded by the
 // texture, metallic-roughness linear), plus the MASK alpha test (3.9.4): active fragments below
 // the cutoff are discarded in `out`. Textures are sampled per quad, for all four lanes so helper
-// lanes give the derivatives, in the order base, metallic-roughness, emission.
+// lanes give the derivatives, in the order base, metallic-roughness, emission (one sample_quads
+// call for the batch).
 template <bool kBaseMap, bool kAlphaTest, bool kMetallicRoughnessMap, bool kEmissionMap>
 void evaluate_pbr_batch(const PbrMaterialParams& p, const FragmentBatch& batch, BatchOutput& out,
                         SurfaceBatch& s) {
@@ -55,26 +56,29 @@ void evaluate_pbr_batch(const PbrMaterialParams& p, const FragmentBatch& batch, 
     for (int f = 0; f < n; ++f) s.emission[c][f] = value;
   }
   if constexpr (kBaseMap || kMetallicRoughnessMap || kEmissionMap) {
-    for (int q = 0; q < batch.quad_count; ++q) {
-      glm::vec2 uv[kQuadLanes];
-      batch_quad_uv(batch, MeshVertexShader::kUv, q, uv);
-      glm::vec4 texel[kQuadLanes];
-      if constexpr (kBaseMap) {
-        p.base_map->sample_quad(p.base_sampler, uv, texel);
-        batch_multiply_quad(s.base_color, 4, q, texel);
-      }
-      if constexpr (kMetallicRoughnessMap) {
-        p.metallic_roughness_map->sample_quad(p.metallic_roughness_sampler, uv, texel);
-        for (int lane = 0; lane < kQuadLanes; ++lane) {
-          s.roughness[q * kQuadLanes + lane] *= texel[lane].y;
-          s.metallic[q * kQuadLanes + lane] *= texel[lane].z;
-        }
-      }
-      if constexpr (kEmissionMap) {
-        p.emission_map->sample_quad(p.emission_sampler, uv, texel);
-        batch_multiply_quad(s.emission, 3, q, texel);
+    // All quads' texels in one call, per quad in the order base, metallic-roughness, emission
+    // (the texel trace's order), then the factors multiplied by them.
+    alignas(64) BatchVec4 base_texel, metallic_roughness_texel, emission_texel;
+    Texture2D::QuadRead reads[3];
+    int read_count = 0;
+    if constexpr (kBaseMap) reads[read_count++] = batch_texture_read(p.base_map, p.base_sampler, base_texel);
+    if constexpr (kMetallicRoughnessMap) {
+      reads[read_count++] = batch_texture_read(p.metallic_roughness_map, p.metallic_roughness_sampler,
+                                               metallic_roughness_texel);
+    }
+    if constexpr (kEmissionMap) {
+      reads[read_count++] = batch_texture_read(p.emission_map, p.emission_sampler, emission_texel);
+    }
+    Texture2D::sample_quads(reads, read_count, batch.varyings[MeshVertexShader::kUv],
+                            batch.varyings[MeshVertexShader::kUv + 1], batch.quad_count);
+    if constexpr (kBaseMap) batch_multiply_quads(s.base_color, 4, batch.quad_count, base_texel);
+    if constexpr (kMetallicRoughnessMap) {
+      for (int f = 0; f < batch.quad_count * kQuadLanes; ++f) {
+        s.roughness[f] *= metallic_roughness_texel[1][f];
+        s.metallic[f] *= metallic_roughness_texel[2][f];
       }
     }
+    if constexpr (kEmissionMap) batch_multiply_quads(s.emission, 3, batch.quad_count, emission_texel);
   }
   if constexpr (kAlphaTest) {
     for (int f = 0; f < batch.fragment_count(); ++f) {

@@ -74,26 +74,26 @@ class CelShader final : public FragmentShader {
       }
     }
     if constexpr (kTextures) {
-      for (int q = 0; q < batch.quad_count; ++q) {
-        glm::vec2 uv[kQuadLanes];
-        batch_quad_uv(batch, ToonVertexShader::kUv, q, uv);
-        glm::vec4 texel[kQuadLanes];
-        if (one_map_) {
-          // Both colours from one image: the two sample instructions read the same texels
-          // (traced twice) and return the same value, filtered once.
-          p_.lit_map->sample_quad(p_.lit_sampler, uv, texel, 2);
-          batch_multiply_quad(lit, 4, q, texel);
-          batch_multiply_quad(shadow, 4, q, texel);
-          continue;
-        }
-        if (p_.lit_map) {
-          p_.lit_map->sample_quad(p_.lit_sampler, uv, texel);
-          batch_multiply_quad(lit, 4, q, texel);
-        }
-        if (p_.shadow_map) {
-          p_.shadow_map->sample_quad(p_.shadow_sampler, uv, texel);
-          batch_multiply_quad(shadow, 4, q, texel);
-        }
+      // All quads' texels in one call, per quad lit then shadow map (the texel trace's order).
+      // Both colours from one image: the two sample instructions read the same texels (traced
+      // twice, fetches = 2) and return the same value, filtered once.
+      const float* u = batch.varyings[ToonVertexShader::kUv];
+      const float* v = batch.varyings[ToonVertexShader::kUv + 1];
+      alignas(64) BatchVec4 lit_texel, shadow_texel;
+      Texture2D::QuadRead reads[2];
+      int read_count = 0;
+      if (one_map_) {
+        reads[read_count++] = batch_texture_read(p_.lit_map, p_.lit_sampler, lit_texel, 2);
+      } else {
+        if (p_.lit_map) reads[read_count++] = batch_texture_read(p_.lit_map, p_.lit_sampler, lit_texel);
+        if (p_.shadow_map) reads[read_count++] = batch_texture_read(p_.shadow_map, p_.shadow_sampler, shadow_texel);
+      }
+      Texture2D::sample_quads(reads, read_count, u, v, batch.quad_count);
+      if (p_.lit_map) batch_multiply_quads(lit, 4, batch.quad_count, lit_texel);
+      if (one_map_) {
+        batch_multiply_quads(shadow, 4, batch.quad_count, lit_texel);
+      } else if (p_.shadow_map) {
+        batch_multiply_quads(shadow, 4, batch.quad_count, shadow_texel);
       }
     }
     alignas(64) BatchVec3 normal;
