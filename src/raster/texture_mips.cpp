@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "raster/pixel_format.h"
+#include "util/error.h"
 
 namespace ontile {
 namespace {
@@ -82,6 +83,9 @@ Texture2D::Level downsample(const Texture2D::Level& src, TexelEncoding encoding)
       dst.texels32f.resize(count);
       downsample_into<TexelEncoding::Float32>(src, dst);
       break;
+    case TexelEncoding::SurfaceFormat:
+      // Render-target views (Texture2D::view_of_surface) sample level 0 in place: no mips.
+      throw Error("texture: no mip chain for a view of a render target");
   }
   return dst;
 }
