@@ -11,6 +11,7 @@
 #include "aov/aov_pass.h"
 #include "context/frame_report.h"
 #include "io/image_io.h"
+#include "memory/transaction_elimination.h"
 #include "pipelines/kit/render_frame.h"
 #include "render_inspect.h"
 #include "render_report.h"
@@ -338,7 +339,11 @@ void add_render_command(CLI::App& app) {
                   "pass as Mali's framebuffer descriptor allows (Bifrost v7); single-target-passes: only in passes "
                   "with one colour target (Bifrost v6); every-target: every single-sample colour write (16x16 tiles "
                   "only; needs --frames N to have a previous frame; TBDR only; docs/memory-model.md); default off")
-      ->check(CLI::IsMember({"on", "single-target-passes", "every-target", "off"}));
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> values = crc_targets_names();
+        values.push_back("off");
+        return values;
+      }()));
   cmd->add_option("--gpu", o->gpu,
                   "GPU preset: mali-g76, mali-g71 (16x16, 128 bpp, AFBC, transaction elimination, IDVS, 512 KiB L2), "
                   "panfrost, apple-g13, adreno-630 (those drivers' tile-size rules); explicit --tile, --budget, "

@@ -107,7 +107,7 @@ void TbdrMemory::choose_crc_writes(const std::vector<CrcCandidate>& candidates) 
           break;
         }
       }
-      if (!candidates.empty()) chosen[pick] = true;
+      chosen[pick] = true;  // candidates is never empty here
       break;
     }
   }

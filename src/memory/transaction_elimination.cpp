@@ -26,6 +26,12 @@ const char* crc_targets_name(CrcTargets targets) {
   return nullptr;
 }
 
+std::vector<std::string> crc_targets_names() {
+  std::vector<std::string> names;
+  for (const CrcTargetsName& n : kCrcTargetsNames) names.push_back(n.name);
+  return names;
+}
+
 const CrcTargets* parse_crc_targets(const std::string& name) {
   for (const CrcTargetsName& n : kCrcTargetsNames) {
     if (name == n.name) return &n.targets;
@@ -35,11 +41,8 @@ const CrcTargets* parse_crc_targets(const std::string& name) {
 
 bool TileSignatureHistory::valid(const std::string& key) const {
   const auto it = tables_.find(key);
-  if (it == tables_.end()) return false;
-  for (const uint8_t v : it->second.valid) {
-    if (v) return true;
-  }
-  return false;
+  return it != tables_.end() &&
+         std::any_of(it->second.valid.begin(), it->second.valid.end(), [](uint8_t v) { return v != 0; });
 }
 
 void TileSignatureHistory::invalidate(const std::string& key) {

@@ -32,6 +32,7 @@ enum class CrcTargets {
 // The CLI's names: "on" (OnePerPass), "single-target-passes", "every-target"; nullptr when unknown.
 const char* crc_targets_name(CrcTargets targets);
 const CrcTargets* parse_crc_targets(const std::string& name);
+std::vector<std::string> crc_targets_names();  // in the order of the enum
 
 // The CRC of every tile of every written surface, by a key naming the write (the pass's position
 // in its frame, the pass, the attachment and store or resolve), carried from one frame to the
