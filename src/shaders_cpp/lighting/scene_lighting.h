@@ -31,7 +31,8 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
                             const BatchVec3& world_position, const BatchVec3& to_view,
                             const FragmentBatch& batch, uint64_t lit, BatchVec3& sum) {
   const int count = batch.fragment_count();
-  alignas(64) int32_t lit_lanes[kBatchFragments], reached[kBatchFragments];
+  // Whole arrays: the lanes round the batch up to a vector (their results are not kept).
+  alignas(64) int32_t lit_lanes[kBatchFragments] = {}, reached[kBatchFragments] = {};
   alignas(64) BatchVec3 to_light, radiance;
   for (int f = 0; f < count; ++f) lit_lanes[f] = static_cast<int32_t>((lit >> f) & 1u);
   for (int c = 0; c < 3; ++c) {
@@ -43,16 +44,15 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
     }
   }
   shade_ggx(brdf, n, to_view, to_light, radiance, lit_lanes, 0, count, false, sum);
+  // Runs of fragments in one grid cell share its light list (a fragment's sum does not depend
+  // on how fragments are grouped: each adds its cell's lights in order).
+  alignas(64) int32_t cell[kBatchFragments];
+  for (int f = 0; f < count; ++f) cell[f] = lighting.grid.cell_at(batch.x_px(f), batch.y_px(f));
   int begin = 0;
   while (begin < count) {
-    const std::span<const uint32_t> lights = lighting.grid.lights_at(batch.x_px(begin), batch.y_px(begin));
     int end = begin + 1;
-    while (end < count) {
-      const std::span<const uint32_t> next = lighting.grid.lights_at(batch.x_px(end), batch.y_px(end));
-      if (next.data() != lights.data() || next.size() != lights.size()) break;
-      ++end;
-    }
-    for (const uint32_t index : lights) {
+    while (end < count && cell[end] == cell[begin]) ++end;
+    for (const uint32_t index : lighting.grid.lights_in(cell[begin])) {
       light_incidence(lighting.lights[index], world_position, lit_lanes, begin, end, to_light, radiance, reached);
       shade_ggx(brdf, n, to_view, to_light, radiance, reached, begin, end, true, sum);
     }
