@@ -52,9 +52,14 @@ class DeferredLightingShader final : public FragmentShader {
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int count = batch.fragment_count();
     alignas(64) GBufferLanes in;
-    for (int f = 0; f < count; ++f) {
-      in.x_px[f] = batch.x_px(f);
-      in.y_px[f] = batch.y_px(f);
+    for (int q = 0; q < batch.quad_count; ++q) {
+      const int x = batch.quad_x_px[q], y = batch.quad_y_px[q];
+      int32_t* xs = in.x_px + q * kQuadLanes;
+      int32_t* ys = in.y_px + q * kQuadLanes;
+      xs[0] = xs[2] = x;
+      xs[1] = xs[3] = x + 1;
+      ys[0] = ys[1] = y;
+      ys[2] = ys[3] = y + 1;
     }
     if constexpr (Source::kLoadsWholeBatches) {
       alignas(64) float unused[kBatchFragments];
@@ -64,14 +69,12 @@ class DeferredLightingShader final : public FragmentShader {
         float* const target[4] = {in.targets[k][0], in.targets[k][1], in.targets[k][2], in.targets[k][3]};
         source_.load_all(1 + k, batch, target);
       }
-      for (int f = 0; f < count; ++f) {
-        if (!batch.active(f)) continue;
-        if (in.depth[f] < 1.0f) {
-          in.lit |= uint64_t{1} << f;
-        } else {
-          out.discard(f);
-        }
-      }
+      uint64_t active = 0;
+      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
+      uint64_t near = 0;
+      for (int f = 0; f < count; ++f) near |= uint64_t{in.depth[f] < 1.0f} << f;
+      in.lit = active & near;
+      out.discard_mask |= active & ~near;
     } else {
       for (int f = 0; f < count; ++f) {
         if (!batch.active(f)) continue;
