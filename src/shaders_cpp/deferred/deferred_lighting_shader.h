@@ -4,11 +4,14 @@
 // the same quantised values, so both variants compute bit-identical results.
 #pragma once
 #include <array>
+#include <bit>
 
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
+#include "raster/texel_fetch_batch.h"
 #include "raster/texture.h"
+#include "raster/texture_batch_simd.h"
 #include "shaders_cpp/deferred/gbuffer_decode_lanes.h"
 #include "shaders_cpp/deferred/gbuffer_layout.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
@@ -30,6 +33,13 @@ struct TextureSource {
   std::array<const Texture2D*, 4> textures{};
   glm::vec4 load(int slot, const FragmentBatch& batch, int f) const {
     return textures[slot]->fetch(0, batch.x_px(f), batch.y_px(f));
+  }
+  // Slots [0, count) as batch views, or false when one cannot be read a batch at a time.
+  bool views(int count, Texture2D::TexelView* out) const {
+    for (int k = 0; k < count; ++k) {
+      if (!batch_fetch_view(*textures[k], out[k])) return false;
+    }
+    return true;
   }
 };
 
@@ -75,6 +85,28 @@ class DeferredLightingShader final : public FragmentShader {
       for (int f = 0; f < count; ++f) near |= uint64_t{in.depth[f] < 1.0f} << f;
       in.lit = active & near;
       out.discard_mask |= active & ~near;
+    } else if (Texture2D::TexelView views[4]; source_.views(1 + layout_.target_count(), views)) {
+      // texelFetch a batch at a time: depth of the active fragments, then the targets of those
+      // in front of the far plane, traced as per-fragment fetches would be.
+      uint64_t active = 0;
+      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
+      alignas(64) int32_t xs[kBatchFragments] = {}, ys[kBatchFragments] = {};
+      for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+        const int f = std::countr_zero(rest);
+        xs[f] = in.x_px[f];
+        ys[f] = in.y_px[f];
+      }
+      const int padded = batch.padded_fragment_count();
+      alignas(64) float depth[4][kBatchFragments];
+      load_texels(views[0], xs, ys, padded, active, depth);
+      uint64_t near = 0;
+      for (int f = 0; f < count; ++f) near |= uint64_t{depth[0][f] < 1.0f} << f;
+      in.lit = active & near;
+      out.discard_mask |= active & ~near;
+      for (int f = 0; f < count; ++f) in.depth[f] = depth[0][f];
+      uint64_t fetched[4] = {active, in.lit, in.lit, in.lit};
+      for (int k = 0; k < layout_.target_count(); ++k) load_texels(views[1 + k], xs, ys, padded, in.lit, in.targets[k]);
+      trace_fetches(views, 1 + layout_.target_count(), xs, ys, count, fetched);
     } else {
       for (int f = 0; f < count; ++f) {
         if (!batch.active(f)) continue;
