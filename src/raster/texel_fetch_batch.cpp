@@ -21,18 +21,7 @@ void trace_fetches(const Texture2D::TexelView* views, int texture_count, const i
   uint64_t any = 0;
   for (int k = 0; k < texture_count; ++k) any |= fetched[k];
   if (fragment_count < 64) any &= (uint64_t{1} << fragment_count) - 1;
-  // Every fetch's granule first (texture-major, a loop the compiler vectorises), then the
-  // fragment-major walk that drops consecutive repeats as record_texel_address does.
-  uint64_t granule_of[4][kBatchFragments];
-  const int computed = texture_count < 4 ? texture_count : 4;
-  for (int k = 0; k < computed; ++k) {
-    const Texture2D::TexelView& view = views[k];
-    const uint64_t width = static_cast<uint64_t>(view.width);
-    for (int f = 0; f < fragment_count; ++f) {
-      const uint64_t index = static_cast<uint64_t>(y[f]) * width + static_cast<uint64_t>(x[f]);
-      granule_of[k][f] = (view.address + index * view.memory_bytes_per_texel) >> 6;
-    }
-  }
+  // record_texel_address per fetch, staged and appended a few hundred granules at a time.
   constexpr int kCapacity = 256;
   uint64_t granules[kCapacity];
   int count = 0;
@@ -45,15 +34,10 @@ void trace_fetches(const Texture2D::TexelView* views, int texture_count, const i
     }
     for (int k = 0; k < texture_count; ++k) {
       if (!((fetched[k] >> f) & 1u)) continue;
-      uint64_t granule;
-      if (k < 4) {
-        granule = granule_of[k][f];
-      } else {
-        const Texture2D::TexelView& view = views[k];
-        const uint64_t index = static_cast<uint64_t>(y[f]) * static_cast<uint64_t>(view.width) +
-                               static_cast<uint64_t>(x[f]);
-        granule = (view.address + index * view.memory_bytes_per_texel) >> 6;
-      }
+      const Texture2D::TexelView& view = views[k];
+      const uint64_t index = static_cast<uint64_t>(y[f]) * static_cast<uint64_t>(view.width) +
+                             static_cast<uint64_t>(x[f]);
+      const uint64_t granule = (view.address + index * view.memory_bytes_per_texel) >> 6;
       granules[count] = granule;
       count += granule != last;
       last = granule;
