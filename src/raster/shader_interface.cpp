@@ -5,6 +5,16 @@
 
 namespace ontile {
 
+void FramebufferFetch::load_quads(int input_slot, const int32_t* quad_x_px, const int32_t* quad_y_px,
+                                  int quad_count, int sample, float* const channel[4]) const {
+  for (int q = 0; q < quad_count; ++q) {
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      const glm::vec4 v = load(input_slot, quad_x_px[q] + (lane & 1), quad_y_px[q] + (lane >> 1), sample);
+      for (int c = 0; c < 4; ++c) channel[c][q * kQuadLanes + lane] = v[c];
+    }
+  }
+}
+
 void FragmentBatch::quad(int q, QuadFragment& out) const {
   out.x_px = quad_x_px[q];
   out.y_px = quad_y_px[q];

@@ -29,6 +29,11 @@ class FramebufferFetch {
  public:
   virtual ~FramebufferFetch() = default;
   virtual glm::vec4 load(int input_slot, int x_px, int y_px, int sample) const = 0;
+  // load() of every lane of quads [0, quad_count) (top-left pixels quad_x_px, quad_y_px) into
+  // channel[c][quad * 4 + lane]: one call per batch instead of one per fragment. Reads have no
+  // side effects, so helper lanes are read too. Default: load() lane by lane.
+  virtual void load_quads(int input_slot, const int32_t* quad_x_px, const int32_t* quad_y_px, int quad_count,
+                          int sample, float* const channel[4]) const;
 };
 
 // Lane order inside a quad: 0 = (x, y), 1 = (x+1, y), 2 = (x, y+1), 3 = (x+1, y+1).
@@ -106,6 +111,10 @@ struct FragmentBatch {
   glm::vec4 input(int input_slot, int f, int which = -1) const {
     const int s = which >= 0 ? which : (sample >= 0 ? sample : 0);
     return fetch->load(input_slot, x_px(f), y_px(f), s);
+  }
+  // input() of every fragment (active or not) into channel[c][f].
+  void inputs(int input_slot, float* const channel[4]) const {
+    fetch->load_quads(input_slot, quad_x_px, quad_y_px, quad_count, sample >= 0 ? sample : 0, channel);
   }
   // Quad q as a QuadFragment, for helpers written per quad (texture LOD from derivatives).
   void quad(int q, QuadFragment& out) const;

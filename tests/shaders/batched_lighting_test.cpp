@@ -1,11 +1,13 @@
 // The batched lighting helpers (SIMD-lane loops over a fragment batch) against their per-fragment
 // originals, bit for bit: light_incidence and shade_ggx, summed as direct lighting sums them,
-// on random and degenerate inputs (zero half vector, back-facing light, surface at the light).
+// on random and degenerate inputs (zero half vector, back-facing light, surface at the light),
+// on every SIMD target.
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <random>
 
+#include "raster/cell_raster.h"
 #include "shaders_cpp/lighting/brdf.h"
 #include "shaders_cpp/lighting/punctual_light.h"
 
@@ -40,7 +42,15 @@ Lanes random_lanes(std::mt19937& rng) {
   return l;
 }
 
-TEST(BatchedLighting, GgxAndLightIncidenceMatchThePerFragmentFunctions) {
+struct AutomaticTargetOnExit {
+  ~AutomaticTargetOnExit() { force_simd_target(""); }
+};
+
+TEST(BatchedLighting, GgxAndLightIncidenceMatchThePerFragmentFunctionsOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  for (const std::string& target : simd_targets()) {
+  SCOPED_TRACE(target);
+  force_simd_target(target);
   std::mt19937 rng(1234);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   for (int round = 0; round < 200; ++round) {
@@ -89,6 +99,7 @@ TEST(BatchedLighting, GgxAndLightIncidenceMatchThePerFragmentFunctions) {
       }
       ASSERT_TRUE(same_bits(batch_get3(sum, f), expected)) << "round " << round << " fragment " << f;
     }
+  }
   }
 }
 

@@ -4,11 +4,15 @@
 // the same quantised values, so both variants compute bit-identical results.
 #pragma once
 #include <array>
+#include <bit>
 
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
+#include "raster/texel_fetch_batch.h"
 #include "raster/texture.h"
+#include "raster/texture_batch_simd.h"
+#include "shaders_cpp/deferred/gbuffer_decode_lanes.h"
 #include "shaders_cpp/deferred/gbuffer_layout.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
 #include "shaders_cpp/tone_curves.h"
@@ -17,15 +21,25 @@ namespace ontile {
 
 // Slot k is input attachment k of the subpass.
 struct InputAttachmentSource {
+  static constexpr bool kLoadsWholeBatches = true;  // reads leave no trace: any order will do
   glm::vec4 load(int slot, const FragmentBatch& batch, int f) const { return batch.input(slot, f); }
+  void load_all(int slot, const FragmentBatch& batch, float* const channel[4]) const { batch.inputs(slot, channel); }
 };
 
 // Slot k is texture k, read at the fragment's own pixel from the base level (every read goes
 // through the texel trace, so the texture-cache model counts it).
 struct TextureSource {
+  static constexpr bool kLoadsWholeBatches = false;
   std::array<const Texture2D*, 4> textures{};
   glm::vec4 load(int slot, const FragmentBatch& batch, int f) const {
     return textures[slot]->fetch(0, batch.x_px(f), batch.y_px(f));
+  }
+  // Slots [0, count) as batch views, or false when one cannot be read a batch at a time.
+  bool views(int count, Texture2D::TexelView* out) const {
+    for (int k = 0; k < count; ++k) {
+      if (!batch_fetch_view(*textures[k], out[k])) return false;
+    }
+    return true;
   }
 };
 
@@ -39,39 +53,80 @@ class DeferredLightingShader final : public FragmentShader {
   DeferredLightingShader(Source source, const GBufferLayout& layout, const SceneLighting& lighting,
                          const glm::dmat4& inverse_view_projection, glm::dvec3 camera_position,
                          int width_px, int height_px)
-      : source_(source), layout_(layout), lighting_(lighting), inverse_view_projection_(inverse_view_projection),
-        camera_position_(camera_position), width_px_(width_px), height_px_(height_px) {}
+      : source_(source), layout_(layout), lighting_(lighting),
+        view_{inverse_view_projection, camera_position, width_px, height_px} {}
   bool may_discard() const override { return true; }
 
   // Reads (depth, then the targets, fragment by fragment: the texel trace order of the classic
-  // variant) and decoding per fragment, then the lights over the batch.
+  // variant), then the decoding and the lights over the batch on SIMD lanes.
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int count = batch.fragment_count();
-    // Zero where nothing is lit: the lighting loops run over every lane and read them.
-    BrdfBatch brdf{};
-    alignas(64) BatchVec3 normal = {}, world = {}, to_view = {}, direct = {};
-    uint64_t lit = 0;
-    for (int f = 0; f < count; ++f) {
-      if (!batch.active(f)) continue;
-      const float depth = source_.load(0, batch, f).x;
-      if (!(depth < 1.0f)) {
-        out.discard(f);
-        continue;
-      }
-      lit |= uint64_t{1} << f;
-      glm::vec4 targets[3];
-      for (int k = 0; k < layout_.target_count(); ++k) targets[k] = source_.load(1 + k, batch, f);
-      const DecodedGBuffer g = decode_gbuffer(layout_, targets);
-      for (int c = 0; c < 3; ++c) {
-        brdf.diffuse_color[c][f] = g.brdf.diffuse_color[c];
-        brdf.f0[c][f] = g.brdf.f0[c];
-      }
-      brdf.roughness[f] = g.brdf.roughness;
-      batch_set3(normal, f, g.normal);
-      const glm::dvec3 w = world_position(batch.x_px(f), batch.y_px(f), depth);
-      batch_set3(world, f, glm::vec3(w));
-      batch_set3(to_view, f, glm::vec3(glm::normalize(camera_position_ - w)));
+    alignas(64) GBufferLanes in;
+    for (int q = 0; q < batch.quad_count; ++q) {
+      const int x = batch.quad_x_px[q], y = batch.quad_y_px[q];
+      int32_t* xs = in.x_px + q * kQuadLanes;
+      int32_t* ys = in.y_px + q * kQuadLanes;
+      xs[0] = xs[2] = x;
+      xs[1] = xs[3] = x + 1;
+      ys[0] = ys[1] = y;
+      ys[2] = ys[3] = y + 1;
     }
+    if constexpr (Source::kLoadsWholeBatches) {
+      alignas(64) float unused[kBatchFragments];
+      float* const depth[4] = {in.depth, unused, unused, unused};
+      source_.load_all(0, batch, depth);
+      for (int k = 0; k < layout_.target_count(); ++k) {
+        float* const target[4] = {in.targets[k][0], in.targets[k][1], in.targets[k][2], in.targets[k][3]};
+        source_.load_all(1 + k, batch, target);
+      }
+      uint64_t active = 0;
+      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
+      uint64_t near = 0;
+      for (int f = 0; f < count; ++f) near |= uint64_t{in.depth[f] < 1.0f} << f;
+      in.lit = active & near;
+      out.discard_mask |= active & ~near;
+    } else if (Texture2D::TexelView views[4]; source_.views(1 + layout_.target_count(), views)) {
+      // texelFetch a batch at a time: depth of the active fragments, then the targets of those
+      // in front of the far plane, traced as per-fragment fetches would be.
+      uint64_t active = 0;
+      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
+      alignas(64) int32_t xs[kBatchFragments] = {}, ys[kBatchFragments] = {};
+      for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+        const int f = std::countr_zero(rest);
+        xs[f] = in.x_px[f];
+        ys[f] = in.y_px[f];
+      }
+      const int padded = batch.padded_fragment_count();
+      alignas(64) float depth[4][kBatchFragments];
+      load_texels(views[0], xs, ys, padded, active, depth);
+      uint64_t near = 0;
+      for (int f = 0; f < count; ++f) near |= uint64_t{depth[0][f] < 1.0f} << f;
+      in.lit = active & near;
+      out.discard_mask |= active & ~near;
+      for (int f = 0; f < count; ++f) in.depth[f] = depth[0][f];
+      uint64_t fetched[4] = {active, in.lit, in.lit, in.lit};
+      for (int k = 0; k < layout_.target_count(); ++k) load_texels(views[1 + k], xs, ys, padded, in.lit, in.targets[k]);
+      trace_fetches(views, 1 + layout_.target_count(), xs, ys, count, fetched);
+    } else {
+      for (int f = 0; f < count; ++f) {
+        if (!batch.active(f)) continue;
+        const float depth = source_.load(0, batch, f).x;
+        if (!(depth < 1.0f)) {
+          out.discard(f);
+          continue;
+        }
+        in.depth[f] = depth;
+        in.lit |= uint64_t{1} << f;
+        for (int k = 0; k < layout_.target_count(); ++k) {
+          const glm::vec4 value = source_.load(1 + k, batch, f);
+          for (int c = 0; c < 4; ++c) in.targets[k][c][f] = value[c];
+        }
+      }
+    }
+    const uint64_t lit = in.lit;
+    BrdfBatch brdf;
+    alignas(64) BatchVec3 normal, world, to_view, direct = {};
+    decode_gbuffer_lanes(layout_, view_, in, count, brdf, normal, world, to_view);
     direct_lighting(lighting_, brdf, normal, world, to_view, batch, lit, direct);
     const bool add_ambient = !layout_.light_in_gbuffer;
     for (int c = 0; c < 3; ++c) {
@@ -85,20 +140,10 @@ class DeferredLightingShader final : public FragmentShader {
   }
 
  private:
-  // The pixel centre at `depth` back through the inverse view-projection (Vulkan clip space:
-  // +Y up, so the top row has NDC y = +1), in double so distant pixels keep their precision.
-  glm::dvec3 world_position(int x, int y, float depth) const {
-    const glm::dvec4 ndc((x + 0.5) / width_px_ * 2.0 - 1.0, 1.0 - (y + 0.5) / height_px_ * 2.0, depth, 1.0);
-    const glm::dvec4 w = inverse_view_projection_ * ndc;
-    return glm::dvec3(w) / w.w;
-  }
-
   Source source_;
   GBufferLayout layout_;
   const SceneLighting& lighting_;
-  glm::dmat4 inverse_view_projection_;
-  glm::dvec3 camera_position_;
-  int width_px_, height_px_;
+  ViewReconstruction view_;
 };
 
 // Slot 0: the HDR light accumulation; output 0: fitted ACES of it, alpha 1. Runs per sample,

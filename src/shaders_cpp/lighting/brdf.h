@@ -97,56 +97,10 @@ inline glm::vec3 shade_ggx(const BrdfInputs& b, glm::vec3 n, glm::vec3 to_view, 
 // shade_ggx for fragments [begin, end) with per-fragment light directions and radiances, written
 // into sum (accumulate = false) or added to it (sum += ..., accumulate = true) where reached[f]
 // is non-zero; other fragments keep sum. Bit for bit shade_ggx: the same operations in the same
-// order, its branches as selects (N.L <= 0 gives exactly 0, which is still added), so the loops
-// run on SIMD lanes; only the Schlick power stays scalar (powf has no bit-exact SIMD form).
-inline void shade_ggx(const BrdfBatch& b, const BatchVec3& n, const BatchVec3& to_view, const BatchVec3& to_light,
-                      const BatchVec3& radiance, const int32_t* reached, int begin, int end, bool accumulate,
-                      BatchVec3& sum) {
-  alignas(64) float n_dot_l[kBatchFragments], one_minus_v_dot_h[kBatchFragments];
-  alignas(64) float specular_scale[kBatchFragments], schlick[kBatchFragments];
-  for (int f = begin; f < end; ++f) {
-    const float nx = n[0][f], ny = n[1][f], nz = n[2][f];
-    const float vx = to_view[0][f], vy = to_view[1][f], vz = to_view[2][f];
-    const float lx = to_light[0][f], ly = to_light[1][f], lz = to_light[2][f];
-    n_dot_l[f] = (nx * lx + ny * ly) + nz * lz;
-    const float n_dot_v_raw = (nx * vx + ny * vy) + nz * vz;
-    const float n_dot_v = n_dot_v_raw < 1e-4f ? 1e-4f : n_dot_v_raw;  // std::max(x, 1e-4f)
-    const float hx = lx + vx, hy = ly + vy, hz = lz + vz;
-    const float half_length = std::sqrt((hx * hx + hy * hy) + hz * hz);
-    const bool has_half = half_length > 0.0f;
-    const float divisor = has_half ? half_length : 1.0f;
-    const float ux = has_half ? hx / divisor : nx;
-    const float uy = has_half ? hy / divisor : ny;
-    const float uz = has_half ? hz / divisor : nz;
-    const float n_dot_h_raw = (nx * ux + ny * uy) + nz * uz;
-    const float n_dot_h = n_dot_h_raw < 0.0f ? 0.0f : n_dot_h_raw;
-    const float v_dot_h_raw = (vx * ux + vy * uy) + vz * uz;
-    const float v_dot_h = v_dot_h_raw < 0.0f ? 0.0f : v_dot_h_raw;
-    const float r = b.roughness[f] < kMinPerceptualRoughness ? kMinPerceptualRoughness : b.roughness[f];
-    const float alpha2 = (r * r) * (r * r);
-    const float d_denominator = n_dot_h * n_dot_h * (alpha2 - 1.0f) + 1.0f;
-    const float distribution = alpha2 / (3.14159265f * d_denominator * d_denominator);
-    const float ndl = n_dot_l[f];
-    const float smith_l = n_dot_v * std::sqrt(ndl * ndl * (1.0f - alpha2) + alpha2);
-    const float smith_v = ndl * std::sqrt(n_dot_v * n_dot_v * (1.0f - alpha2) + alpha2);
-    const float visibility = 0.5f / (smith_l + smith_v);
-    specular_scale[f] = distribution * visibility * 3.14159265f;
-    one_minus_v_dot_h[f] = 1.0f - v_dot_h;
-  }
-  for (int f = begin; f < end; ++f) {
-    schlick[f] = reached[f] && n_dot_l[f] > 0.0f ? std::pow(one_minus_v_dot_h[f], 5.0f) : 0.0f;
-  }
-  for (int c = 0; c < 3; ++c) {
-    for (int f = begin; f < end; ++f) {
-      const float f0 = b.f0[c][f];
-      const float fresnel = f0 + (1.0f - f0) * schlick[f];
-      const float specular = fresnel * specular_scale[f];
-      const float reflected = radiance[c][f] * n_dot_l[f] * (b.diffuse_color[c][f] + specular);
-      const float term = n_dot_l[f] > 0.0f ? reflected : 0.0f;
-      const float total = accumulate ? sum[c][f] + term : term;
-      sum[c][f] = reached[f] ? total : sum[c][f];
-    }
-  }
-}
+// order on SIMD lanes (lighting_lanes.cpp), its branches as selects (N.L <= 0 gives exactly 0,
+// which is still added), the Schlick power as schlick_power.h computes it.
+void shade_ggx(const BrdfBatch& b, const BatchVec3& n, const BatchVec3& to_view, const BatchVec3& to_light,
+               const BatchVec3& radiance, const int32_t* reached, int begin, int end, bool accumulate,
+               BatchVec3& sum);
 
 }  // namespace ontile

@@ -62,54 +62,9 @@ inline bool light_incidence(const PunctualLight& light, glm::vec3 surface, glm::
 
 // light_incidence for fragments [begin, end) at surface positions `surface`: reached[f] = lit[f]
 // and the light reaches the fragment, with to_light and radiance written where it does. Bit for
-// bit light_incidence (std::max and std::clamp as their comparisons, branches as selects), as
-// loops over SIMD lanes.
-inline void light_incidence(const PunctualLight& light, const BatchVec3& surface, const int32_t* lit, int begin,
-                            int end, BatchVec3& to_light, BatchVec3& radiance, int32_t* reached) {
-  if (light.type == PunctualLight::Type::Directional) {
-    for (int c = 0; c < 3; ++c) {
-      const float l = -light.direction[c], intensity = light.intensity[c];
-      for (int f = begin; f < end; ++f) {
-        to_light[c][f] = l;
-        radiance[c][f] = intensity;
-      }
-    }
-    for (int f = begin; f < end; ++f) reached[f] = lit[f];
-    return;
-  }
-  const bool has_range = light.range > 0.0f;
-  const float range2 = light.range * light.range;
-  const bool spot = light.type == PunctualLight::Type::Spot;
-  const glm::vec3 p = light.position, direction = light.direction, intensity = light.intensity;
-  alignas(64) float falloff[kBatchFragments];
-  for (int f = begin; f < end; ++f) {
-    const float ox = p.x - surface[0][f], oy = p.y - surface[1][f], oz = p.z - surface[2][f];
-    const float distance_squared = (ox * ox + oy * oy) + oz * oz;
-    const bool in_range = !(has_range && distance_squared >= range2);
-    const float length = std::sqrt(distance_squared < 1e-8f ? 1e-8f : distance_squared);
-    const float lx = ox / length, ly = oy / length, lz = oz / length;
-    // range_attenuation
-    const float d2 = distance_squared < 1e-4f ? 1e-4f : distance_squared;
-    const float ratio2 = d2 / range2;
-    const float window_raw = 1.0f - ratio2 * ratio2;
-    const float window_low = window_raw < 0.0f ? 0.0f : window_raw;
-    const float window = 1.0f < window_low ? 1.0f : window_low;
-    const float range_factor = light.range <= 0.0f ? 1.0f / d2 : window / d2;
-    // spot_attenuation with light_to_surface = -to_light
-    const float cd = (direction.x * -lx + direction.y * -ly) + direction.z * -lz;
-    const float a_raw = cd * light.spot_scale + light.spot_offset;
-    const float a_low = a_raw < 0.0f ? 0.0f : a_raw;
-    const float a = 1.0f < a_low ? 1.0f : a_low;
-    const float spot_factor = spot ? a * a : 1.0f;
-    falloff[f] = range_factor * spot_factor;
-    reached[f] = lit[f] && in_range && falloff[f] > 0.0f;
-    to_light[0][f] = lx;
-    to_light[1][f] = ly;
-    to_light[2][f] = lz;
-  }
-  for (int c = 0; c < 3; ++c) {
-    for (int f = begin; f < end; ++f) radiance[c][f] = intensity[c] * falloff[f];
-  }
-}
+// bit light_incidence (std::max and std::clamp as their comparisons, branches as selects), on
+// SIMD lanes (lighting_lanes.cpp).
+void light_incidence(const PunctualLight& light, const BatchVec3& surface, const int32_t* lit, int begin, int end,
+                     BatchVec3& to_light, BatchVec3& radiance, int32_t* reached);
 
 }  // namespace ontile

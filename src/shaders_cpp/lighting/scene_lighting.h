@@ -23,41 +23,36 @@ struct SceneLighting {
   LightGrid grid;
 };
 
+// direct_lighting over fragments [0, count) whose light-grid cells are cell[f], on SIMD lanes
+// (lighting_lanes.cpp): the same operations in the same order, each light's incidence, GGX and
+// Schlick power kept in registers.
+void direct_lighting_lanes(const SceneLighting& lighting, const BrdfBatch& brdf, const BatchVec3& n,
+                           const BatchVec3& world_position, const BatchVec3& to_view, const int32_t* cell, int count,
+                           uint64_t lit, BatchVec3& sum);
+
 // Direct light reflected towards the viewer, into sum, for the fragments of `batch` whose bit
 // is set in `lit` (bit f: fragment f, all below fragment_count()): the sun, then the grid
 // cell's lights in ascending index order (a fixed order, so every variant rounds identically),
-// light by light over runs of fragments that share a grid cell.
+// light by light over runs of fragments that share a grid cell (a fragment's sum does not depend
+// on how fragments are grouped: each adds its own cell's lights in order). Other fragments keep
+// sum.
 inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf, const BatchVec3& n,
                             const BatchVec3& world_position, const BatchVec3& to_view,
                             const FragmentBatch& batch, uint64_t lit, BatchVec3& sum) {
   const int count = batch.fragment_count();
-  alignas(64) int32_t lit_lanes[kBatchFragments], reached[kBatchFragments];
-  alignas(64) BatchVec3 to_light, radiance;
-  for (int f = 0; f < count; ++f) lit_lanes[f] = static_cast<int32_t>((lit >> f) & 1u);
-  for (int c = 0; c < 3; ++c) {
-    // glm's operator[] is a switch: read once so the fills vectorise.
-    const float to_light_value = lighting.sun_to_light[c], radiance_value = lighting.sun_radiance[c];
-    for (int f = 0; f < count; ++f) {
-      to_light[c][f] = to_light_value;
-      radiance[c][f] = radiance_value;
+  alignas(64) int32_t cell[kBatchFragments];
+  for (int q = 0; q < batch.quad_count; ++q) {
+    const int x = batch.quad_x_px[q], y = batch.quad_y_px[q];
+    const int first = lighting.grid.cell_at(x, y);
+    int32_t* lanes = cell + q * kQuadLanes;
+    // Cells are rectangles: when the quad's corners share one, so do its four pixels.
+    if (first == lighting.grid.cell_at(x + 1, y + 1)) {
+      lanes[0] = lanes[1] = lanes[2] = lanes[3] = first;
+    } else {
+      for (int lane = 0; lane < kQuadLanes; ++lane) lanes[lane] = lighting.grid.cell_at(x + (lane & 1), y + (lane >> 1));
     }
   }
-  shade_ggx(brdf, n, to_view, to_light, radiance, lit_lanes, 0, count, false, sum);
-  int begin = 0;
-  while (begin < count) {
-    const std::span<const uint32_t> lights = lighting.grid.lights_at(batch.x_px(begin), batch.y_px(begin));
-    int end = begin + 1;
-    while (end < count) {
-      const std::span<const uint32_t> next = lighting.grid.lights_at(batch.x_px(end), batch.y_px(end));
-      if (next.data() != lights.data() || next.size() != lights.size()) break;
-      ++end;
-    }
-    for (const uint32_t index : lights) {
-      light_incidence(lighting.lights[index], world_position, lit_lanes, begin, end, to_light, radiance, reached);
-      shade_ggx(brdf, n, to_view, to_light, radiance, reached, begin, end, true, sum);
-    }
-    begin = end;
-  }
+  direct_lighting_lanes(lighting, brdf, n, world_position, to_view, cell, count, lit, sum);
 }
 
 }  // namespace ontile

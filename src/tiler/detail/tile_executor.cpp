@@ -26,17 +26,51 @@ class TileFetch final : public FramebufferFetch {
             int depth_index)
       : memory_(memory), rect_(rect), inputs_(inputs), depth_index_(depth_index) {}
   glm::vec4 load(int input_slot, int x_px, int y_px, int sample) const override {
-    if (input_slot < 0 || input_slot >= static_cast<int>(inputs_.size())) {
-      throw Error("framebuffer fetch of input slot " + std::to_string(input_slot) +
-                  ", but the subpass declares " + std::to_string(inputs_.size()) + " inputs");
-    }
-    const int attachment = inputs_[input_slot];
+    const int attachment = attachment_of(input_slot);
     const size_t i = memory_.index(x_px - rect_.x0, y_px - rect_.y0, sample);
     if (attachment == depth_index_) return {memory_.depth_plane()[i], 0.0f, 0.0f, 1.0f};
     return memory_.color_plane(attachment)[i];
   }
+  // The quads' two rows are adjacent pixels of tile memory: one index per quad.
+  void load_quads(int input_slot, const int32_t* quad_x_px, const int32_t* quad_y_px, int quad_count, int sample,
+                  float* const channel[4]) const override {
+    const int attachment = attachment_of(input_slot);
+    const size_t right = memory_.index(1, 0, 0), below = memory_.index(0, 1, 0);
+    const size_t offsets[kQuadLanes] = {0, right, below, below + right};
+    if (attachment == depth_index_) {
+      const float* depth = memory_.depth_plane();
+      for (int q = 0; q < quad_count; ++q) {
+        const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          const int f = q * kQuadLanes + lane;
+          channel[0][f] = depth[i + offsets[lane]];
+          channel[1][f] = 0.0f;
+          channel[2][f] = 0.0f;
+          channel[3][f] = 1.0f;
+        }
+      }
+      return;
+    }
+    const glm::vec4* colour = memory_.color_plane(attachment);
+    for (int q = 0; q < quad_count; ++q) {
+      const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const glm::vec4& v = colour[i + offsets[lane]];
+        const int f = q * kQuadLanes + lane;
+        for (int c = 0; c < 4; ++c) channel[c][f] = v[c];
+      }
+    }
+  }
 
  private:
+  int attachment_of(int input_slot) const {
+    if (input_slot < 0 || input_slot >= static_cast<int>(inputs_.size())) {
+      throw Error("framebuffer fetch of input slot " + std::to_string(input_slot) +
+                  ", but the subpass declares " + std::to_string(inputs_.size()) + " inputs");
+    }
+    return inputs_[input_slot];
+  }
+
   const TileMemory& memory_;
   const TileRect& rect_;
   const std::vector<int>& inputs_;
