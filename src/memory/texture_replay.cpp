@@ -132,15 +132,15 @@ SetArray group_sets(const SetArray& all, int group_bits, std::vector<uint64_t>& 
 // Copies group k's ways between the cache's SetArray and the group's own (to_group: into it).
 void copy_group_ways(const SetArray& all, const SetArray& group, uint32_t k, int group_bits,
                      bool to_group) {
-  for (uint32_t way = 0; way < all.ways; ++way) {
-    uint64_t* cache_way = all.tags + static_cast<size_t>(way) * all.sets + k;
-    uint64_t* group_way = group.tags + static_cast<size_t>(way) * group.sets;
-    for (uint32_t j = 0; j < group.sets; ++j) {
-      uint64_t& in_cache = cache_way[static_cast<size_t>(j) << group_bits];
+  for (uint32_t j = 0; j < group.sets; ++j) {
+    const uint32_t set = j << group_bits | k;
+    for (uint32_t way = 0; way < all.ways; ++way) {
+      uint64_t& in_cache = all.tags[all.slot_of(set, way)];
+      uint64_t& in_group = group.tags[group.slot_of(j, way)];
       if (to_group) {
-        group_way[j] = in_cache;
+        in_group = in_cache;
       } else {
-        in_cache = group_way[j];
+        in_cache = in_group;
       }
     }
   }
