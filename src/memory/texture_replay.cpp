@@ -67,10 +67,11 @@ TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& 
   return traffic_of(accesses, misses, cache);
 }
 
-// Splitting the granules by group costs about twice what replaying them costs (callgrind, demo
-// cartoon 960x540: 21 and 11 instructions per access), so fewer threads than this replay faster
-// serially.
-constexpr int kMinimumParallelThreads = 4;
+// Splitting the granules by group costs several times what replaying them costs (callgrind,
+// demo cartoon 1920x1080, 26 M accesses: split_tile 570 M instructions, the serial replay 178 M,
+// the groups' replays 217 M), so the parallel replay's (570 + 217) / T only beats the serial
+// 178 from T = 4.4 threads with perfect scaling; below this many threads the replay is serial.
+constexpr int kMinimumParallelThreads = 6;
 
 // log2 of the number of set groups for `threads` threads: enough groups for every thread, no
 // more than the placement-independent bits and the sets allow; 0 = replay serially.

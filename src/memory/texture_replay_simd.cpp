@@ -192,6 +192,7 @@ uint64_t ReplayGranulesKernel(const SetArray& sets, RegionTable& regions,
     if (sets.ways == 16) return ReplayPowerOfTwoSets<true, 15>(sets, regions, granules, count);
     return ReplayPowerOfTwoSets<true, 0>(sets, regions, granules, count);
   }
+  if (sets.ways == 16) return ReplayPowerOfTwoSets<false, 15>(sets, regions, granules, count);
   return ReplayPowerOfTwoSets<false, 0>(sets, regions, granules, count);
 }
 

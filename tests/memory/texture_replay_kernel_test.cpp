@@ -181,7 +181,8 @@ TEST(TextureReplayKernel, AdversarialStreamsReplayAsThePlainLru) {
         misses += expected;
         hits += call.size() - expected;
       }
-      EXPECT_GT(hits, 500u) << what;
+      // Both outcomes occur (but a cache of one line never hits: repeats are merged when traced).
+      if (shape.sets * shape.ways > 1) EXPECT_GT(hits, 500u) << what;
       EXPECT_GT(misses, 500u) << what;
       std::map<uint64_t, uint64_t> by_region;
       regions.add_misses_to(by_region);
