@@ -51,7 +51,7 @@ HWY_INLINE void ShiftUpOne(uint64_t* row, size_t count) {
   const D d;
   const size_t lanes = hn::Lanes(d);
   if (count < lanes) {
-    for (size_t j = count; j > 0; --j) row[j] = row[j - 1];  // NOLINT: no memmove call
+    for (size_t j = count; j > 0; --j) row[j] = row[j - 1];
     return;
   }
   const auto first = hn::LoadU(d, row);
