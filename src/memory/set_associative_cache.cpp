@@ -15,11 +15,12 @@ SetAssociativeCache::SetAssociativeCache(uint32_t sets, uint32_t ways, int line_
   sets_.sets_are_power_of_two = std::has_single_bit(sets);
 }
 
-// The same move-to-front pass as SetArray::access_line, carrying each way's state with its tag.
+// The same move-to-front pass as SetArray::access_line, carrying each way's state with its tag
+// (state_ has tags_'s layout).
 bool SetAssociativeCache::access_line_write_back(uint64_t line, uint32_t owner, bool write,
                                                  WriteBack& evicted) {
   evicted = WriteBack{};
-  const size_t set = sets_.index_of_line(line);
+  const uint32_t set = sets_.index_of_line(line);
   uint64_t* tag = tags_.data() + set;
   uint32_t* state = state_.data() + set;
   const uint32_t written = write ? kDirty : 0;
@@ -31,9 +32,10 @@ bool SetAssociativeCache::access_line_write_back(uint64_t line, uint32_t owner, 
   uint64_t carried = *tag;
   uint32_t carried_state = *state;
   *tag = line;
-  for (uint32_t position = 1; position < sets_.ways; ++position) {
-    tag += sets_.sets;
-    state += sets_.sets;
+  const size_t older = sets_.slot_of(set, 1);
+  tag = tags_.data() + older;
+  state = state_.data() + older;
+  for (uint32_t position = 1; position < sets_.ways; ++position, ++tag, ++state) {
     const uint64_t held = *tag;
     const uint32_t held_state = *state;
     *tag = carried;

@@ -9,13 +9,14 @@
 namespace ontile {
 
 // The ways of a group of cache sets and the mapping of lines onto them. Each set keeps its lines
-// ordered from most to least recently used (exact LRU). Storage is way-major, way w of set index
-// i at tags[w * sets + i], so the most recent ways of all sets are one array: replay loops test
-// "is this line its set's most recent one" (about 96 % of the benchmark scenes' texture
-// accesses) with one load, on SIMD lanes by a gather (texture_replay_kernel.h). A SetArray is a
-// view: copies share the ways.
+// ordered from most to least recently used (exact LRU). Storage: the most recent way of every set
+// first, one array (recent[set]), so replay loops test "is this line its set's most recent one"
+// (about 96 % of the benchmark scenes' texture accesses) with one load, on SIMD lanes by a gather
+// (texture_replay_kernel.h); then each set's older ways 1..ways-1 side by side (older_of(set)),
+// so the move to the front that a miss or an older hit makes is one contiguous shift. A SetArray
+// is a view: copies share the ways.
 struct SetArray {
-  uint64_t* tags = nullptr;  // sets x ways, ~0 = empty
+  uint64_t* tags = nullptr;  // sets x ways, ~0 = empty: recent ways, then older rows
   uint32_t sets = 0, ways = 0;
   int line_shift = 0;          // line = address unit >> line_shift (texture: log2(line / 64))
   int index_shift = 0;         // set index = (line >> index_shift) % sets
@@ -25,6 +26,14 @@ struct SetArray {
     const uint64_t above = line >> index_shift;
     return static_cast<uint32_t>(sets_are_power_of_two ? above & (sets - 1) : above % sets);
   }
+  // Way 0 of set `set` is tags[set]; way w >= 1 is older_of(set)[w - 1].
+  uint64_t* recent() const { return tags; }
+  uint64_t* older_of(uint32_t set) const {
+    return tags + sets + static_cast<size_t>(set) * (ways - 1);
+  }
+  size_t slot_of(uint32_t set, uint32_t way) const {
+    return way == 0 ? set : sets + static_cast<size_t>(set) * (ways - 1) + (way - 1);
+  }
   // Looks up the line holding address unit `unit`; true on a hit. Misses fill the LRU way.
   bool access(uint64_t unit) const { return access_line(unit >> line_shift); }
   // A hit in the most recent way is one compare and no reordering. Otherwise the line moves to
@@ -32,12 +41,13 @@ struct SetArray {
   // moves and the last (the least recent, or an empty way: lines only ever enter at the front,
   // so empty ways stay at the back) drops out. Inline, so replay loops make no call per access.
   bool access_line(uint64_t line) const {
-    uint64_t* way = tags + index_of_line(line);
-    if (*way == line) return true;
-    uint64_t carried = *way;
-    *way = line;
-    for (uint32_t position = 1; position < ways; ++position) {
-      way += sets;
+    const uint32_t set = index_of_line(line);
+    uint64_t* front = tags + set;
+    if (*front == line) return true;
+    uint64_t carried = *front;
+    *front = line;
+    uint64_t* way = older_of(set);
+    for (uint32_t position = 1; position < ways; ++position, ++way) {
       const uint64_t held = *way;
       *way = carried;
       if (held == line) return true;

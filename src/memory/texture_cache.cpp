@@ -48,6 +48,10 @@ uint64_t TextureCache::frame_base_granule(uint64_t id) {
     if (next_frame_granule_ == 0) next_frame_granule_ = uint64_t{1} << kRegionShiftGranules;
     it = frame_base_granule_.emplace(id, next_frame_granule_).first;
     next_frame_granule_ += (Texture2D::reserved_bytes_of(id) + 63) / 64;
+    if (next_frame_granule_ > kFrameGranuleLimit) {
+      throw Error("texture regions of one frame exceed " +
+                  std::to_string(kFrameGranuleLimit * 64 >> 40) + " TiB");
+    }
   }
   return it->second;
 }

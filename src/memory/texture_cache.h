@@ -46,6 +46,9 @@ class TextureCache {
   // place() for a region already placed (read-only, so replay threads may share it); 0 for id 0.
   uint64_t placed_offset(uint64_t id) const;
   static constexpr int kRegionShiftGranules = 34;  // Texture2D::kTextureIdShift - 6
+  // Placed regions end below this frame granule (16 TiB of textures in one frame; more throws),
+  // which the replay's SIMD hit test relies on (texture_replay_kernel.h, RegionTable).
+  static constexpr uint64_t kFrameGranuleLimit = uint64_t{1} << 38;
 
  private:
   TextureCacheConfig config_;

@@ -67,10 +67,11 @@ TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& 
   return traffic_of(accesses, misses, cache);
 }
 
-// Splitting the granules by group costs about twice what replaying them costs (callgrind, demo
-// cartoon 960x540: 21 and 11 instructions per access), so fewer threads than this replay faster
-// serially.
-constexpr int kMinimumParallelThreads = 4;
+// Splitting the granules by group costs several times what replaying them costs (callgrind,
+// demo cartoon 1920x1080, 26 M accesses: split_tile 570 M instructions, the serial replay 178 M,
+// the groups' replays 217 M), so the parallel replay's (570 + 217) / T only beats the serial
+// 178 from T = 4.4 threads with perfect scaling; below this many threads the replay is serial.
+constexpr int kMinimumParallelThreads = 6;
 
 // log2 of the number of set groups for `threads` threads: enough groups for every thread, no
 // more than the placement-independent bits and the sets allow; 0 = replay serially.
@@ -132,15 +133,15 @@ SetArray group_sets(const SetArray& all, int group_bits, std::vector<uint64_t>& 
 // Copies group k's ways between the cache's SetArray and the group's own (to_group: into it).
 void copy_group_ways(const SetArray& all, const SetArray& group, uint32_t k, int group_bits,
                      bool to_group) {
-  for (uint32_t way = 0; way < all.ways; ++way) {
-    uint64_t* cache_way = all.tags + static_cast<size_t>(way) * all.sets + k;
-    uint64_t* group_way = group.tags + static_cast<size_t>(way) * group.sets;
-    for (uint32_t j = 0; j < group.sets; ++j) {
-      uint64_t& in_cache = cache_way[static_cast<size_t>(j) << group_bits];
+  for (uint32_t j = 0; j < group.sets; ++j) {
+    const uint32_t set = j << group_bits | k;
+    for (uint32_t way = 0; way < all.ways; ++way) {
+      uint64_t& in_cache = all.tags[all.slot_of(set, way)];
+      uint64_t& in_group = group.tags[group.slot_of(j, way)];
       if (to_group) {
-        group_way[j] = in_cache;
+        in_group = in_cache;
       } else {
-        in_cache = group_way[j];
+        in_cache = in_group;
       }
     }
   }

@@ -17,8 +17,19 @@ namespace ontile {
 // TextureCache::place returns), direct-mapped by the id's low bits. A region missing from its
 // slot is asked of `resolve` (in stream order, so a serial replay places regions in first-use
 // order) and replaces the slot's previous region.
+//
+// The SIMD hit test adds offsets[id % kSlots] without comparing ids: for a granule whose region
+// is not the slot's the sum can never be a cached line. Proof: every real frame granule is below
+// 2^39 (region 0 below 2^34, placed regions below TextureCache::kFrameGranuleLimit = 2^38 plus
+// their 34-bit offset). A slot holding region X gives a granule of region Y != X (Y = X mod 64,
+// ids < 2^30) the frame base_X + low + (Y - X) 2^34: congruent to a value below 2^39 mod 2^40 but
+// not equal to it, so some bit >= 40 is set. An empty slot s holds kEmptySlotFrameBase -
+// s 2^34 (kEmptySlotFrameBase = 2^39), giving region Y = s mod 64 a frame with bit 39 set. Both
+// differ from every real frame granule in a bit >= 39, above any line shift (line bytes < 2^25
+// B), so the lines differ; neither can be the empty tag ~0 (its low 40 bits would be all ones).
 struct RegionTable {
   static constexpr size_t kSlots = 64;
+  static constexpr uint64_t kEmptySlotFrameBase = uint64_t{1} << 39;
   alignas(64) uint64_t ids[kSlots];
   alignas(64) uint64_t offsets[kSlots];
   // Misses of each slot's region since it entered the slot; a region leaving its slot adds
@@ -32,7 +43,7 @@ struct RegionTable {
       : resolve(resolve_offset), context(resolve_context) {
     for (size_t slot = 0; slot < kSlots; ++slot) {
       ids[slot] = ~uint64_t{0};  // no region: ids are below 2^30
-      offsets[slot] = 0;
+      offsets[slot] = kEmptySlotFrameBase - (uint64_t{slot} << TextureCache::kRegionShiftGranules);
       misses[slot] = 0;
     }
   }

@@ -44,18 +44,26 @@ class ReferenceLru {
     }
     return it->second + (traced & ((uint64_t{1} << 34) - 1));
   }
-  template <class Tiles>  // tiles in index order, each a range of traced granules
-  TextureTraffic replay(const Tiles& tiles, uint32_t line_bytes) {
+  // Tiles in index order, each a range of traced granules; fills `detail` (misses per tile and
+  // per region id) when given.
+  template <class Tiles>
+  TextureTraffic replay(const Tiles& tiles, uint32_t line_bytes,
+                        TextureReplayDetail* detail = nullptr) {
     TextureTraffic t;
+    if (detail) *detail = TextureReplayDetail{};
     for (const auto& tile : tiles) {
+      uint64_t tile_misses = 0;
       for (const uint64_t g : tile) {
         ++t.accesses;
         if (access(frame_granule(g))) {
           ++t.hits;
         } else {
           ++t.misses;
+          ++tile_misses;
+          if (detail) ++detail->misses_per_region[g >> 34];
         }
       }
+      if (detail) detail->misses_per_tile.push_back(tile_misses);
     }
     t.bytes_read = t.misses * line_bytes;
     return t;

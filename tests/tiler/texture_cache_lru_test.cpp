@@ -137,9 +137,9 @@ PackedTraces pack(const std::vector<std::vector<uint64_t>>& tiles) {
 }
 
 TextureTraffic replay_with_threads(TextureCache& cache, const std::vector<TileTrace>& traces,
-                                   int threads) {
+                                   int threads, TextureReplayDetail* detail = nullptr) {
   tbb::task_arena arena(threads);
-  return arena.execute([&] { return replay_texture_traces(cache, traces); });
+  return arena.execute([&] { return replay_texture_traces(cache, traces, detail); });
 }
 
 void expect_equal(const TextureTraffic& a, const TextureTraffic& b, const std::string& what) {
@@ -149,15 +149,22 @@ void expect_equal(const TextureTraffic& a, const TextureTraffic& b, const std::s
   EXPECT_EQ(a.bytes_read, b.bytes_read) << what;
 }
 
+void expect_equal(const TextureReplayDetail& a, const TextureReplayDetail& b,
+                  const std::string& what) {
+  EXPECT_EQ(a.misses_per_tile, b.misses_per_tile) << what;
+  EXPECT_EQ(a.misses_per_region, b.misses_per_region) << what;
+}
+
 // Replays two frames' worth of passes (the second pass continues the first one's cache state)
-// at each thread count, against the reference.
+// at each thread count, against the reference: totals, misses per tile and per region.
 void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& first,
                                      const std::vector<std::vector<uint64_t>>& second) {
   const PackedTraces a = pack(first), b = pack(second);
   for (const TextureCacheConfig& c : configs()) {
     ReferenceLru reference(c);
-    const TextureTraffic expected_a = reference.replay(first, c.line_bytes);
-    const TextureTraffic expected_b = reference.replay(second, c.line_bytes);
+    TextureReplayDetail expected_detail_a, expected_detail_b;
+    const TextureTraffic expected_a = reference.replay(first, c.line_bytes, &expected_detail_a);
+    const TextureTraffic expected_b = reference.replay(second, c.line_bytes, &expected_detail_b);
     // Both outcomes occur (but a cache of one line never hits: repeats are merged when traced).
     if (c.size_bytes > c.line_bytes) {
       ASSERT_GT(expected_a.hits, 0u) << name_of(c);
@@ -166,8 +173,13 @@ void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& f
     for (int threads : {1, 2, 3, 7}) {
       TextureCache cache(c);
       const std::string what = name_of(c) + ", " + std::to_string(threads) + " threads";
-      expect_equal(replay_with_threads(cache, a.traces, threads), expected_a, what + ", pass 1");
-      expect_equal(replay_with_threads(cache, b.traces, threads), expected_b, what + ", pass 2");
+      TextureReplayDetail detail_a, detail_b;
+      expect_equal(replay_with_threads(cache, a.traces, threads, &detail_a), expected_a,
+                   what + ", pass 1");
+      expect_equal(detail_a, expected_detail_a, what + ", pass 1");
+      expect_equal(replay_with_threads(cache, b.traces, threads, &detail_b), expected_b,
+                   what + ", pass 2");
+      expect_equal(detail_b, expected_detail_b, what + ", pass 2");
     }
   }
 }
