@@ -1,0 +1,259 @@
+// The Sobel pass's batch trace (sobel_trace_kernel.h) on 32-bit lanes, for planes whose
+// granules and byte offsets fit 32 bits (BatchTracePlanes::granules_fit_32): twice the lanes of
+// the 64-bit kernel, each granule an add and a shift from per-row and per-column terms, and the
+// usual per-fragment read pattern written with fixed stores. Integer arithmetic only, so every
+// SIMD target records the same granules.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shaders_cpp/toon/sobel_trace32_kernel.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <bit>
+
+#include "shaders_cpp/toon/sobel_trace_kernel.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile::sobel {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DU = hn::ScalableTag<uint32_t>;
+using VU = hn::Vec<DU>;
+
+// Bit i for lane i (x86 vectors hold at most 16 32-bit lanes).
+alignas(64) constexpr uint32_t kLaneBit32[16] = {1u << 0, 1u << 1, 1u << 2,  1u << 3,
+                                                 1u << 4, 1u << 5, 1u << 6,  1u << 7,
+                                                 1u << 8, 1u << 9, 1u << 10, 1u << 11,
+                                                 1u << 12, 1u << 13, 1u << 14, 1u << 15};
+
+// Slots of a fragment's 20 reads, as in the 64-bit kernel: depth taps 0-8, the normal centre
+// 9, the other normal taps 10-17 in row-major order, the colour 18, the border 19.
+constexpr int kNormalCentreSlot = kTaps;
+constexpr int kColorSlot = 2 * kTaps;
+constexpr int kBorderSlot = 2 * kTaps + 1;
+
+// Cells of each read pattern's reads (the first, then the kept slots in order) in the slot
+// table (slot * kBatchFragments), and how many there are; unused cells read slot 0.
+struct PatternCells {
+  alignas(64) int32_t offset[kReadPatterns][kMaxPatternReads] = {};
+  int reads[kReadPatterns] = {};
+  constexpr PatternCells() {
+    for (int p = 0; p < kReadPatterns; ++p) {
+      int n = 1;
+      for (int s = 1; s < kTraceSlots; ++s) {
+        if ((kReadPatternSlots[p] >> s) & 1u) offset[p][n++] = s * kBatchFragments;
+      }
+      reads[p] = n;
+    }
+  }
+};
+constexpr PatternCells kPatternCells;
+
+// Tagged granules of a plane on 32-bit lanes: tag + ((origin % 64 + y * row_bytes + x *
+// texel_bytes) >> 6), the plane's granule less origin / 64 - tag (prepare_tags: the byte
+// offsets fit 32 bits).
+struct PlaneLanes32 {
+  VU tag, origin_offset, row_bytes, texel_bytes;
+  PlaneLanes32(DU du, const TracePlane& p, uint32_t plane_tag)
+      : tag(hn::Set(du, plane_tag)),
+        origin_offset(hn::Set(du, static_cast<uint32_t>(p.origin & 63u))),
+        row_bytes(hn::Set(du, static_cast<uint32_t>(p.texel_bytes * static_cast<uint64_t>(p.width)))),
+        texel_bytes(hn::Set(du, static_cast<uint32_t>(p.texel_bytes))) {}
+  HWY_INLINE VU row_term(VU y) const { return hn::Add(hn::Mul(y, row_bytes), origin_offset); }
+  HWY_INLINE VU column_term(VU x) const { return hn::Mul(x, texel_bytes); }
+  HWY_INLINE VU granule(VU row, VU column) const {
+    return hn::Add(tag, hn::ShiftRight<6>(hn::Add(row, column)));
+  }
+};
+
+int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                       const FragmentEdges& edges, int count, uint64_t active, uint64_t* out,
+                       uint64_t& last_granule) {
+  const DU du;
+  const size_t lanes = hn::Lanes(du);
+  // Tagged granules per slot and, per fragment, bit s set where slot s differs from the read before it
+  // in the fragment. A read the fragment does not make repeats the granule before it, so it is
+  // never kept and the next read compares with the last read that was made.
+  alignas(64) uint32_t granule[kTraceSlots][kBatchFragments];
+  alignas(64) uint32_t kept[kBatchFragments];
+  using P = BatchTracePlanes;
+  const PlaneLanes32 depth(du, planes.depth, planes.tag[P::kDepth]);
+  const PlaneLanes32 normal(du, planes.normal, planes.tag[P::kNormal]);
+  const PlaneLanes32 color(du, planes.color, planes.tag[P::kColor]);
+  const auto load = [du](const int32_t* p) { return hn::BitCast(du, hn::Load(hn::RebindToSigned<DU>(), p)); };
+  const VU top_bit = hn::Set(du, uint32_t{1} << 31);
+  for (int f = 0; f < count; f += static_cast<int>(lanes)) {
+    VU y[kTapsPerAxis], x[kTapsPerAxis], row[kTapsPerAxis], column[kTapsPerAxis];
+    for (int a = 0; a < kTapsPerAxis; ++a) {
+      y[a] = load(taps.y[a] + f);
+      x[a] = load(taps.x[a] + f);
+      row[a] = depth.row_term(y[a]);
+      column[a] = depth.column_term(x[a]);
+    }
+    // Bit 31 takes each slot's "equals the read before" as the slots go by (shifting the
+    // earlier ones down), so after the colour slot, slot s sits at bit s + 31 - kColorSlot:
+    // a compare, an and, a shift and an or per slot, no per-slot constant.
+    VU repeats = hn::Zero(du);
+    VU previous = depth.granule(row[0], column[0]);
+    hn::Store(previous, du, granule[0] + f);
+    const auto next = [&](VU current, int slot) {
+      hn::Store(current, du, granule[slot] + f);
+      repeats = hn::Or(hn::ShiftRight<1>(repeats),
+                       hn::And(hn::VecFromMask(du, hn::Eq(current, previous)), top_bit));
+      previous = current;
+    };
+    for (int k = 1; k < kTaps; ++k) {
+      next(depth.granule(row[k / kTapsPerAxis], column[k % kTapsPerAxis]), k);
+    }
+    if (planes.has_normal) {
+      for (int a = 0; a < kTapsPerAxis; ++a) {
+        row[a] = normal.row_term(y[a]);
+        column[a] = normal.column_term(x[a]);
+      }
+      next(normal.granule(row[1], column[1]), kNormalCentreSlot);
+      const VU edge_bits = hn::Set(du, static_cast<uint32_t>((edges.depth_edge >> f) & 0xFFFFu));
+      const auto depth_edge = hn::Ne(hn::And(edge_bits, hn::Load(du, kLaneBit32)), hn::Zero(du));
+      int slot = kNormalCentreSlot + 1;
+      for (int k = 0; k < kTaps; ++k) {
+        if (k == kCentreTap) continue;
+        const VU g = normal.granule(row[k / kTapsPerAxis], column[k % kTapsPerAxis]);
+        next(hn::IfThenElse(depth_edge, previous, g), slot++);
+      }
+    } else {
+      // No normal reads: slots 9-17 repeat the read before.
+      repeats = hn::Or(hn::ShiftRight<kColorSlot - kNormalCentreSlot>(repeats),
+                       hn::Set(du, ~uint32_t{0} << (32 - (kColorSlot - kNormalCentreSlot))));
+    }
+    const VU color_row = color.row_term(load(taps.color_y + f));
+    next(color.granule(color_row, color.column_term(load(taps.color_x + f))), kColorSlot);
+    hn::Store(previous, du, granule[kBorderSlot] + f);
+    const VU kept_slots = hn::AndNot(repeats, hn::Set(du, ~uint32_t{0}));  // slot 0 at bit 31 - 18
+    hn::Store(hn::And(hn::ShiftRight<31 - kColorSlot>(kept_slots), hn::Set(du, ~uint32_t{1})), du,
+              kept + f);
+  }
+  // The border read of fragments on an edge, at the nearest tap's texel.
+  const uint64_t* const untag = planes.slot_untag;
+  if (planes.has_border) {
+    const TracePlane& b = planes.border;
+    for (uint64_t rest = active & edges.edge; rest != 0; rest &= rest - 1) {
+      const int f = std::countr_zero(rest);
+      const int tap = edges.nearest_tap[f];
+      const uint64_t texel = static_cast<uint64_t>(taps.y[tap / kTapsPerAxis][f]) * b.width +
+                             static_cast<uint64_t>(taps.x[tap % kTapsPerAxis][f]);
+      const uint64_t g = (b.origin + texel * b.texel_bytes) >> 6;
+      granule[kBorderSlot][f] = static_cast<uint32_t>(g - untag[kBorderSlot]);
+      if (granule[kBorderSlot][f] != granule[kColorSlot][f]) kept[f] |= uint32_t{1} << kBorderSlot;
+    }
+  }
+  // Fragments in order: the first read compares with the last read of the fragment before.
+  // A fragment of a read pattern whose first read is new writes its granules with gathers
+  // from the slot table (vectors of up to 8; the last may write past its reads, into room
+  // the next fragments overwrite).
+  using DW = hn::CappedTag<uint64_t, 8>;
+  const DW dw;
+  const hn::Rebind<uint32_t, DW> dh;
+  const hn::Rebind<int32_t, DW> dhi;
+  const uint64_t untag_depth = untag[0];
+  int written = 0;
+  uint64_t last = last_granule;
+  for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+    const int f = std::countr_zero(rest);
+    const uint64_t first = untag_depth + granule[0][f];
+    int pattern = 0;
+    while (pattern < kReadPatterns && kept[f] != kReadPatternSlots[pattern]) ++pattern;
+    if (pattern < kReadPatterns && first != last) {
+      const auto fragment = hn::Set(dhi, f);
+      const int reads = kPatternCells.reads[pattern];
+      const int32_t* const offsets = kPatternCells.offset[pattern];
+      const uint64_t* const untags = planes.pattern_untag[pattern];
+      for (int i = 0; i < reads; i += static_cast<int>(hn::Lanes(dw))) {
+        const auto index = hn::Add(hn::Load(dhi, offsets + i), fragment);
+        const auto tagged = hn::GatherIndex(dh, &granule[0][0], index);
+        hn::StoreU(hn::Add(hn::PromoteTo(dw, tagged), hn::Load(dw, untags + i)), dw,
+                   out + written + i);
+      }
+      written += reads;
+      last = out[written - 1];
+      continue;
+    }
+    out[written] = first;
+    written += first != last;
+    last = first;
+    for (uint32_t slots = kept[f]; slots != 0; slots &= slots - 1) {
+      const int slot = std::countr_zero(slots);
+      last = untag[slot] + granule[slot][f];
+      out[written++] = last;
+    }
+  }
+  last_granule = last;
+  return written;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile::sobel
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile::sobel {
+
+HWY_EXPORT(TraceBatch32Kernel);
+
+uint64_t TracePlane::last_granule() const {
+  return (origin + texel_bytes * static_cast<uint64_t>(width) * static_cast<uint64_t>(height) - 1) >> 6;
+}
+
+void BatchTracePlanes::prepare_tags() {
+  // Tagged offsets stay below 2^26 (byte offsets below 2^32), so four planes' tags fit 32 bits.
+  constexpr uint64_t kByteLimit = uint64_t{1} << 32;
+  constexpr uint32_t kTagSpan = uint32_t{1} << 26;
+  const TracePlane* const plane[kPlanes] = {&depth, has_normal ? &normal : nullptr, &color,
+                                            has_border ? &border : nullptr};
+  tags_fit = false;
+  uint32_t next_tag = 0;
+  for (int p = 0; p < kPlanes; ++p) {
+    if (!plane[p]) continue;
+    const TracePlane& a = *plane[p];
+    const uint64_t bytes = a.texel_bytes * static_cast<uint64_t>(a.width) * a.height;
+    if (a.texel_bytes == 0 || (a.origin & 63u) + bytes >= kByteLimit) return;
+    int shared = -1;
+    for (int q = 0; q < p; ++q) {
+      if (!plane[q]) continue;
+      const TracePlane& b = *plane[q];
+      if (a.origin == b.origin) {
+        // One texture twice: one tag when its texels map to the same bytes.
+        if (a.texel_bytes != b.texel_bytes || a.width != b.width) return;
+        shared = q;
+      } else if (a.first_granule() <= b.last_granule() && b.first_granule() <= a.last_granule()) {
+        return;  // overlapping planes at different origins: granules could meet untagged
+      }
+    }
+    if (shared >= 0) {
+      tag[p] = tag[shared];
+    } else {
+      tag[p] = next_tag;
+      next_tag += kTagSpan;
+    }
+  }
+  const TracePlane* const by_index[kPlanes] = {&depth, &normal, &color, &border};
+  for (int s = 0; s < kTraceSlots; ++s) {
+    const int index = s < kTaps ? kDepth : s < 2 * kTaps ? kNormal : s == 2 * kTaps ? kColor : kBorder;
+    slot_untag[s] = by_index[index]->first_granule() - tag[index];
+  }
+  for (int p = 0; p < kReadPatterns; ++p) {
+    int n = 0;
+    for (int s = 0; s < kTraceSlots; ++s) {
+      if (s == 0 || ((kReadPatternSlots[p] >> s) & 1u)) pattern_untag[p][n++] = slot_untag[s];
+    }
+  }
+  tags_fit = true;
+}
+
+int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                   const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
+                   uint64_t& last_granule) {
+  return HWY_DYNAMIC_DISPATCH(TraceBatch32Kernel)(planes, taps, edges, count, active, granules,
+                                                  last_granule);
+}
+
+}  // namespace ontile::sobel
+#endif  // HWY_ONCE
