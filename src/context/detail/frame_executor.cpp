@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 #include "shaders_cpp/full_screen.h"
@@ -88,15 +87,16 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
     texture = Texture2D::view_of_surface(s->width(), s->height(), s->format(),
                                          s->pixel_bytes(0, 0), s->name());
   } else {
-    // Packed formats: decoded once, a row at a time (decode_pixels: the values Surface::read
-    // gives, on SIMD lanes), cheaper than decoding at every texel read of the pass.
+    // Packed formats: decoded once, a row at a time straight into the texture's texels
+    // (decode_pixels: the values Surface::read gives, on SIMD lanes), cheaper than decoding at
+    // every texel read of the pass.
     const size_t row_floats = static_cast<size_t>(s->width()) * 4;
     std::vector<float> rgba(row_floats * s->height());
-    std::vector<glm::vec4> row(static_cast<size_t>(s->width()));
-    static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float) && alignof(glm::vec4) == alignof(float),
+                  "a row of vec4 is a row of floats");
     for (int y = 0; y < s->height(); ++y) {
-      decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(), row.data());
-      std::memcpy(rgba.data() + row_floats * y, row.data(), row_floats * sizeof(float));
+      decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(),
+                    reinterpret_cast<glm::vec4*>(rgba.data() + row_floats * y));
     }
     texture = Texture2D::from_surface_texels(s->width(), s->height(), std::move(rgba),
                                              bytes_per_pixel(s->format()), s->name());
