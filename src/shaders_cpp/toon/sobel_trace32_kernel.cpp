@@ -48,6 +48,10 @@ struct PatternCells {
   }
 };
 constexpr PatternCells kPatternCells;
+// The depth-edge pattern; the next is the same with the border read.
+constexpr uint32_t kDepthEdgePattern = 3;
+static_assert(kReadPatternSlots[kDepthEdgePattern + 1] ==
+              (kReadPatternSlots[kDepthEdgePattern] | (uint32_t{1} << kBorderSlot)));
 
 // Tagged granules of a plane on 32-bit lanes: tag + ((origin % 64 + y * row_bytes + x *
 // texel_bytes) >> 6), the plane's granule less origin / 64 - tag (prepare_tags: the byte
@@ -66,6 +70,31 @@ struct PlaneLanes32 {
   }
 };
 
+// Writes `reads` granules of fragment f: table[offsets[i] + f] (tagged) plus untag[i], with
+// gathers of up to 8 lanes (offsets and untag hold a multiple of 8 entries; the vectors may
+// write up to 7 entries past `reads`).
+HWY_INLINE void gather_reads(const uint32_t* table, int f, const int32_t* offsets,
+                             const uint64_t* untag, int reads, uint64_t* out) {
+#if HWY_TARGET == HWY_SCALAR
+  for (int i = 0; i < reads; ++i) out[i] = untag[i] + table[offsets[i] + f];
+#else
+  const hn::CappedTag<uint32_t, 8> dg;
+  const hn::RebindToSigned<decltype(dg)> dgi;
+  const hn::Half<decltype(dg)> dh;
+  const hn::Rebind<uint64_t, decltype(dh)> dw;
+  const size_t half = hn::Lanes(dh);
+  const auto fragment = hn::Set(dgi, f);
+  for (int i = 0; i < reads; i += static_cast<int>(hn::Lanes(dg))) {
+    const auto tagged = hn::GatherIndex(dg, table, hn::Add(hn::Load(dgi, offsets + i), fragment));
+    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::LowerHalf(dh, tagged)), hn::Load(dw, untag + i)), dw,
+               out + i);
+    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::UpperHalf(dh, tagged)),
+                       hn::Load(dw, untag + i + half)),
+               dw, out + i + half);
+  }
+#endif
+}
+
 int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                        const FragmentEdges& edges, int count, uint64_t active, uint64_t* out,
                        uint64_t& last_granule) {
@@ -76,6 +105,7 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
   // never kept and the next read compares with the last read that was made.
   alignas(64) uint32_t granule[kTraceSlots][kBatchFragments];
   alignas(64) uint32_t kept[kBatchFragments];
+  alignas(64) uint32_t pattern[kBatchFragments];  // read pattern index, kReadPatterns for none
   using P = BatchTracePlanes;
   const PlaneLanes32 depth(du, planes.depth, planes.tag[P::kDepth]);
   const PlaneLanes32 normal(du, planes.normal, planes.tag[P::kNormal]);
@@ -127,9 +157,16 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
     const VU color_row = color.row_term(load(taps.color_y + f));
     next(color.granule(color_row, color.column_term(load(taps.color_x + f))), kColorSlot);
     hn::Store(previous, du, granule[kBorderSlot] + f);
-    const VU kept_slots = hn::AndNot(repeats, hn::Set(du, ~uint32_t{0}));  // slot 0 at bit 31 - 18
-    hn::Store(hn::And(hn::ShiftRight<31 - kColorSlot>(kept_slots), hn::Set(du, ~uint32_t{1})), du,
-              kept + f);
+    // Kept slots: the complement of the repeats, slot s moved down to bit s (bit 0 cleared).
+    const VU kept_slots = hn::And(hn::ShiftRight<31 - kColorSlot>(hn::Not(repeats)),
+                                  hn::Set(du, ~uint32_t{1}));
+    hn::Store(kept_slots, du, kept + f);
+    VU pattern_of = hn::Set(du, uint32_t{kReadPatterns});
+    for (int p = 0; p < kReadPatterns; ++p) {
+      pattern_of = hn::IfThenElse(hn::Eq(kept_slots, hn::Set(du, kReadPatternSlots[p])),
+                                  hn::Set(du, static_cast<uint32_t>(p)), pattern_of);
+    }
+    hn::Store(pattern_of, du, pattern + f);
   }
   // The border read of fragments on an edge, at the nearest tap's texel.
   const uint64_t* const untag = planes.slot_untag;
@@ -142,37 +179,36 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                              static_cast<uint64_t>(taps.x[tap % kTapsPerAxis][f]);
       const uint64_t g = (b.origin + texel * b.texel_bytes) >> 6;
       granule[kBorderSlot][f] = static_cast<uint32_t>(g - untag[kBorderSlot]);
-      if (granule[kBorderSlot][f] != granule[kColorSlot][f]) kept[f] |= uint32_t{1} << kBorderSlot;
+      if (granule[kBorderSlot][f] != granule[kColorSlot][f]) {
+        kept[f] |= uint32_t{1} << kBorderSlot;
+        // Only the depth-edge pattern has a bordered twin; the others have no border read.
+        pattern[f] = pattern[f] == kDepthEdgePattern ? kDepthEdgePattern + 1 : kReadPatterns;
+      }
     }
   }
   // Fragments in order: the first read compares with the last read of the fragment before.
   // A fragment of a read pattern whose first read is new writes its granules with gathers
   // from the slot table (vectors of up to 8; the last may write past its reads, into room
   // the next fragments overwrite).
-  using DW = hn::CappedTag<uint64_t, 8>;
-  const DW dw;
-  const hn::Rebind<uint32_t, DW> dh;
-  const hn::Rebind<int32_t, DW> dhi;
-  const uint64_t untag_depth = untag[0];
+  const uint64_t untag_depth = untag[0], untag_color = untag[kColorSlot];
+  const uint32_t* const table = &granule[0][0];
   int written = 0;
   uint64_t last = last_granule;
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const uint64_t first = untag_depth + granule[0][f];
-    int pattern = 0;
-    while (pattern < kReadPatterns && kept[f] != kReadPatternSlots[pattern]) ++pattern;
-    if (pattern < kReadPatterns && first != last) {
-      const auto fragment = hn::Set(dhi, f);
-      const int reads = kPatternCells.reads[pattern];
-      const int32_t* const offsets = kPatternCells.offset[pattern];
-      const uint64_t* const untags = planes.pattern_untag[pattern];
-      for (int i = 0; i < reads; i += static_cast<int>(hn::Lanes(dw))) {
-        const auto index = hn::Add(hn::Load(dhi, offsets + i), fragment);
-        const auto tagged = hn::GatherIndex(dh, &granule[0][0], index);
-        hn::StoreU(hn::Add(hn::PromoteTo(dw, tagged), hn::Load(dw, untags + i)), dw,
-                   out + written + i);
-      }
-      written += reads;
+    const uint32_t p = pattern[f];
+    if (p == 0 && first != last) {
+      gather_reads(table, f, kPatternCells.offset[0], planes.pattern_untag[0],
+                   kPatternCells.reads[0], out + written);
+      written += kPatternCells.reads[0];
+      last = untag_color + granule[kColorSlot][f];
+      continue;
+    }
+    if (p < kReadPatterns && first != last) {
+      gather_reads(table, f, kPatternCells.offset[p], planes.pattern_untag[p],
+                   kPatternCells.reads[p], out + written);
+      written += kPatternCells.reads[p];
       last = out[written - 1];
       continue;
     }
