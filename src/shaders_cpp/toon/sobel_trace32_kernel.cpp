@@ -48,25 +48,35 @@ struct PatternCells {
   }
 };
 constexpr PatternCells kPatternCells;
+// The read patterns as the kernel's kept words (slot s at bit kBorderSlot - s).
+constexpr uint32_t kept_word(uint32_t slot_bits) {
+  uint32_t word = 0;
+  for (int s = 0; s < kTraceSlots; ++s) {
+    if ((slot_bits >> s) & 1u) word |= uint32_t{1} << (kBorderSlot - s);
+  }
+  return word;
+}
+constexpr uint32_t kPatternKept[kReadPatterns] = {
+    kept_word(kReadPatternSlots[0]), kept_word(kReadPatternSlots[1]),
+    kept_word(kReadPatternSlots[2]), kept_word(kReadPatternSlots[3]),
+    kept_word(kReadPatternSlots[4])};
 // The depth-edge pattern; the next is the same with the border read.
 constexpr uint32_t kDepthEdgePattern = 3;
 static_assert(kReadPatternSlots[kDepthEdgePattern + 1] ==
               (kReadPatternSlots[kDepthEdgePattern] | (uint32_t{1} << kBorderSlot)));
 
-// Tagged granules of a plane on 32-bit lanes: tag + ((origin % 64 + y * row_bytes + x *
-// texel_bytes) >> 6), the plane's granule less origin / 64 - tag (prepare_tags: the byte
-// offsets fit 32 bits).
+// Granules of a plane less its first (origin / 64) on 32-bit lanes: (origin % 64 + y *
+// row_bytes + x * texel_bytes) >> 6, exact when the byte offsets fit 32 bits (prepare_tags).
 struct PlaneLanes32 {
-  VU tag, origin_offset, row_bytes, texel_bytes;
-  PlaneLanes32(DU du, const TracePlane& p, uint32_t plane_tag)
-      : tag(hn::Set(du, plane_tag)),
-        origin_offset(hn::Set(du, static_cast<uint32_t>(p.origin & 63u))),
+  VU origin_offset, row_bytes, texel_bytes;
+  PlaneLanes32(DU du, const TracePlane& p)
+      : origin_offset(hn::Set(du, static_cast<uint32_t>(p.origin & 63u))),
         row_bytes(hn::Set(du, static_cast<uint32_t>(p.texel_bytes * static_cast<uint64_t>(p.width)))),
         texel_bytes(hn::Set(du, static_cast<uint32_t>(p.texel_bytes))) {}
   HWY_INLINE VU row_term(VU y) const { return hn::Add(hn::Mul(y, row_bytes), origin_offset); }
   HWY_INLINE VU column_term(VU x) const { return hn::Mul(x, texel_bytes); }
   HWY_INLINE VU granule(VU row, VU column) const {
-    return hn::Add(tag, hn::ShiftRight<6>(hn::Add(row, column)));
+    return hn::ShiftRight<6>(hn::Add(row, column));
   }
 };
 
@@ -100,18 +110,23 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                        uint64_t& last_granule) {
   const DU du;
   const size_t lanes = hn::Lanes(du);
-  // Tagged granules per slot and, per fragment, bit s set where slot s differs from the read before it
-  // in the fragment. A read the fragment does not make repeats the granule before it, so it is
-  // never kept and the next read compares with the last read that was made.
+  // Per slot, the granule less the first granule of its plane (origin / 64) and, per
+  // fragment, the slots that differ from the read before them in the fragment, slot s at bit
+  // kBorderSlot - s. A read the fragment does not make repeats the granule before it, so it
+  // is never kept and the next read compares with the last read that was made. Reads of two
+  // planes compare only where the planes share a tag (one texture); otherwise their granules
+  // never meet (prepare_tags).
   alignas(64) uint32_t granule[kTraceSlots][kBatchFragments];
   alignas(64) uint32_t kept[kBatchFragments];
   alignas(64) uint32_t pattern[kBatchFragments];  // read pattern index, kReadPatterns for none
   using P = BatchTracePlanes;
-  const PlaneLanes32 depth(du, planes.depth, planes.tag[P::kDepth]);
-  const PlaneLanes32 normal(du, planes.normal, planes.tag[P::kNormal]);
-  const PlaneLanes32 color(du, planes.color, planes.tag[P::kColor]);
-  const auto load = [du](const int32_t* p) { return hn::BitCast(du, hn::Load(hn::RebindToSigned<DU>(), p)); };
-  const VU top_bit = hn::Set(du, uint32_t{1} << 31);
+  const PlaneLanes32 depth(du, planes.depth), normal(du, planes.normal), color(du, planes.color);
+  const bool normal_meets_depth = planes.tag[P::kNormal] == planes.tag[P::kDepth];
+  const int color_follows = planes.has_normal ? P::kNormal : P::kDepth;
+  const bool color_meets_before = planes.tag[P::kColor] == planes.tag[color_follows];
+  const auto load = [du](const int32_t* p) {
+    return hn::BitCast(du, hn::Load(hn::RebindToSigned<DU>(), p));
+  };
   for (int f = 0; f < count; f += static_cast<int>(lanes)) {
     VU y[kTapsPerAxis], x[kTapsPerAxis], row[kTapsPerAxis], column[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
@@ -120,50 +135,49 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
       row[a] = depth.row_term(y[a]);
       column[a] = depth.column_term(x[a]);
     }
-    // Bit 31 takes each slot's "equals the read before" as the slots go by (shifting the
-    // earlier ones down), so after the colour slot, slot s sits at bit s + 31 - kColorSlot:
-    // a compare, an and, a shift and an or per slot, no per-slot constant.
+    // repeats = 2 repeats + (1 where the read equals the one before): the earliest slot ends
+    // in the highest bit, with an add, a compare and a subtract per slot.
     VU repeats = hn::Zero(du);
     VU previous = depth.granule(row[0], column[0]);
     hn::Store(previous, du, granule[0] + f);
-    const auto next = [&](VU current, int slot) {
+    const auto next = [&](VU current, int slot, bool comparable) {
       hn::Store(current, du, granule[slot] + f);
-      repeats = hn::Or(hn::ShiftRight<1>(repeats),
-                       hn::And(hn::VecFromMask(du, hn::Eq(current, previous)), top_bit));
+      repeats = hn::Add(repeats, repeats);
+      if (comparable) repeats = hn::Sub(repeats, hn::VecFromMask(du, hn::Eq(current, previous)));
       previous = current;
     };
     for (int k = 1; k < kTaps; ++k) {
-      next(depth.granule(row[k / kTapsPerAxis], column[k % kTapsPerAxis]), k);
+      next(depth.granule(row[k / kTapsPerAxis], column[k % kTapsPerAxis]), k, true);
     }
     if (planes.has_normal) {
       for (int a = 0; a < kTapsPerAxis; ++a) {
         row[a] = normal.row_term(y[a]);
         column[a] = normal.column_term(x[a]);
       }
-      next(normal.granule(row[1], column[1]), kNormalCentreSlot);
+      next(normal.granule(row[1], column[1]), kNormalCentreSlot, normal_meets_depth);
       const VU edge_bits = hn::Set(du, static_cast<uint32_t>((edges.depth_edge >> f) & 0xFFFFu));
       const auto depth_edge = hn::Ne(hn::And(edge_bits, hn::Load(du, kLaneBit32)), hn::Zero(du));
       int slot = kNormalCentreSlot + 1;
       for (int k = 0; k < kTaps; ++k) {
         if (k == kCentreTap) continue;
         const VU g = normal.granule(row[k / kTapsPerAxis], column[k % kTapsPerAxis]);
-        next(hn::IfThenElse(depth_edge, previous, g), slot++);
+        next(hn::IfThenElse(depth_edge, previous, g), slot++, true);
       }
     } else {
       // No normal reads: slots 9-17 repeat the read before.
-      repeats = hn::Or(hn::ShiftRight<kColorSlot - kNormalCentreSlot>(repeats),
-                       hn::Set(du, ~uint32_t{0} << (32 - (kColorSlot - kNormalCentreSlot))));
+      constexpr int kSkipped = kColorSlot - kNormalCentreSlot;
+      repeats = hn::Or(hn::ShiftLeft<kSkipped>(repeats), hn::Set(du, (1u << kSkipped) - 1));
     }
     const VU color_row = color.row_term(load(taps.color_y + f));
-    next(color.granule(color_row, color.column_term(load(taps.color_x + f))), kColorSlot);
-    hn::Store(previous, du, granule[kBorderSlot] + f);
-    // Kept slots: the complement of the repeats, slot s moved down to bit s (bit 0 cleared).
-    const VU kept_slots = hn::And(hn::ShiftRight<31 - kColorSlot>(hn::Not(repeats)),
-                                  hn::Set(du, ~uint32_t{1}));
+    next(color.granule(color_row, color.column_term(load(taps.color_x + f))), kColorSlot,
+         color_meets_before);
+    // Kept: the slots 1-18 that are no repeat, slot s at bit kBorderSlot - s.
+    constexpr uint32_t kSlotsBits = (1u << (kColorSlot)) - 1;  // slots 1-18 in repeats
+    const VU kept_slots = hn::ShiftLeft<1>(hn::AndNot(repeats, hn::Set(du, kSlotsBits)));
     hn::Store(kept_slots, du, kept + f);
     VU pattern_of = hn::Set(du, uint32_t{kReadPatterns});
     for (int p = 0; p < kReadPatterns; ++p) {
-      pattern_of = hn::IfThenElse(hn::Eq(kept_slots, hn::Set(du, kReadPatternSlots[p])),
+      pattern_of = hn::IfThenElse(hn::Eq(kept_slots, hn::Set(du, kPatternKept[p])),
                                   hn::Set(du, static_cast<uint32_t>(p)), pattern_of);
     }
     hn::Store(pattern_of, du, pattern + f);
@@ -179,8 +193,8 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                              static_cast<uint64_t>(taps.x[tap % kTapsPerAxis][f]);
       const uint64_t g = (b.origin + texel * b.texel_bytes) >> 6;
       granule[kBorderSlot][f] = static_cast<uint32_t>(g - untag[kBorderSlot]);
-      if (granule[kBorderSlot][f] != granule[kColorSlot][f]) {
-        kept[f] |= uint32_t{1} << kBorderSlot;
+      if (g != untag[kColorSlot] + granule[kColorSlot][f]) {
+        kept[f] |= 1u;  // slot kBorderSlot
         // Only the depth-edge pattern has a bordered twin; the others have no border read.
         pattern[f] = pattern[f] == kDepthEdgePattern ? kDepthEdgePattern + 1 : kReadPatterns;
       }
@@ -215,8 +229,10 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
     out[written] = first;
     written += first != last;
     last = first;
-    for (uint32_t slots = kept[f]; slots != 0; slots &= slots - 1) {
-      const int slot = std::countr_zero(slots);
+    for (uint32_t slots = kept[f]; slots != 0;) {
+      const int bit = 31 - std::countl_zero(slots);  // the earliest slot left
+      slots ^= uint32_t{1} << bit;
+      const int slot = kBorderSlot - bit;
       last = untag[slot] + granule[slot][f];
       out[written++] = last;
     }
@@ -273,7 +289,7 @@ void BatchTracePlanes::prepare_tags() {
   const TracePlane* const by_index[kPlanes] = {&depth, &normal, &color, &border};
   for (int s = 0; s < kTraceSlots; ++s) {
     const int index = s < kTaps ? kDepth : s < 2 * kTaps ? kNormal : s == 2 * kTaps ? kColor : kBorder;
-    slot_untag[s] = by_index[index]->first_granule() - tag[index];
+    slot_untag[s] = by_index[index]->first_granule();
   }
   for (int p = 0; p < kReadPatterns; ++p) {
     int n = 0;
