@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <climits>
+#include <cmath>
 #include <cstring>
 
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
@@ -70,6 +71,17 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
   const DF df;
   const DI di;
   const size_t n = hn::Lanes(df);
+  // The layout in locals: the stores to taps could alias it otherwise.
+  const TapLayout l = layout;
+  // With ordered offsets below 2^100 in magnitude, tap 0 <= tap 1 <= tap 2 on every lane:
+  // u + offset is monotonic and cannot overflow to infinity for a finite u (that takes a sum
+  // of 2^128 - 2^103), every step of nearest_clamped_texel is monotonic, and a non-finite u
+  // gives texel 0 for all taps. So the box needs only the outer taps.
+  const auto ordered = [](const float (&o)[kTapsPerAxis]) {
+    constexpr float kSmall = 1.2676506e30f;  // 2^100
+    return std::fabs(o[0]) < kSmall && std::fabs(o[2]) < kSmall && o[0] <= o[1] && o[1] <= o[2];
+  };
+  const bool outer_taps_bound = ordered(l.offset_u) && ordered(l.offset_v);
   VI min_x = hn::Set(di, INT32_MAX), min_y = min_x;
   VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
@@ -77,19 +89,26 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
     const hn::Mask<DI> on = lanes_of(di, active >> f);
     VI x[kTapsPerAxis], y[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
-      x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, layout.offset_u[a])),
-                                   layout.grid_width);
-      y[a] = nearest_clamped_texel(df, hn::Add(vf, hn::Set(df, layout.offset_v[a])),
-                                   layout.grid_height);
+      x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, l.offset_u[a])), l.grid_width);
+      y[a] = nearest_clamped_texel(df, hn::Add(vf, hn::Set(df, l.offset_v[a])), l.grid_height);
       hn::Store(x[a], di, taps.x[a] + f);
       hn::Store(y[a], di, taps.y[a] + f);
-      min_x = hn::Min(min_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MAX)));
-      min_y = hn::Min(min_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MAX)));
-      max_x = hn::Max(max_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MIN)));
-      max_y = hn::Max(max_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MIN)));
     }
-    const VI color_x = nearest_clamped_texel(df, uf, layout.color_width);
-    const VI color_y = nearest_clamped_texel(df, vf, layout.color_height);
+    const auto widen = [&](VI lo, VI hi, VI& box_min_x, VI& box_max_x) {
+      box_min_x = hn::Min(box_min_x, hn::IfThenElse(on, lo, hn::Set(di, INT32_MAX)));
+      box_max_x = hn::Max(box_max_x, hn::IfThenElse(on, hi, hn::Set(di, INT32_MIN)));
+    };
+    if (outer_taps_bound) {
+      widen(x[0], x[2], min_x, max_x);
+      widen(y[0], y[2], min_y, max_y);
+    } else {
+      for (int a = 0; a < kTapsPerAxis; ++a) {
+        widen(x[a], x[a], min_x, max_x);
+        widen(y[a], y[a], min_y, max_y);
+      }
+    }
+    const VI color_x = nearest_clamped_texel(df, uf, l.color_width);
+    const VI color_y = nearest_clamped_texel(df, vf, l.color_height);
     hn::Store(color_x, di, taps.color_x + f);
     hn::Store(color_y, di, taps.color_y + f);
   }
