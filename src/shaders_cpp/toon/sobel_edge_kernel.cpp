@@ -180,10 +180,16 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
                                 depth.surface_format == PixelFormat::R32_FLOAT)) {
       // One float per texel, stored as is: decode_pixel gives (d, 0, 0, 1) with d these bits.
       const uint8_t* src = depth.surface_bytes + (static_cast<size_t>(y) * depth.width + grid.x0) * 4;
-      for (; i + n <= width; i += n) {
-        const VF d = hn::LoadU(df, reinterpret_cast<const float*>(src + 4 * i));
-        hn::StoreU(d, df, grid.depth + cell0 + i);
-        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+      const auto cells = [&](size_t at) {
+        const VF d = hn::LoadU(df, reinterpret_cast<const float*>(src + 4 * at));
+        hn::StoreU(d, df, grid.depth + cell0 + at);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      // The tail as the last full vector of the row: cells decoded twice get the same bits.
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         float d;
@@ -192,11 +198,16 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
         grid.linear_z[cell0 + i] = linearize_one(d, decode);
       }
     } else if (const float* src = float_row(depth, grid.x0, y, grid.width, row_texels)) {
-      for (; i + n <= width; i += n) {
+      const auto cells = [&](size_t at) {
         VF d, g, b, a;
-        hn::LoadInterleaved4(df, src + i * 4, d, g, b, a);
-        hn::StoreU(d, df, grid.depth + cell0 + i);
-        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+        hn::LoadInterleaved4(df, src + at * 4, d, g, b, a);
+        hn::StoreU(d, df, grid.depth + cell0 + at);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         grid.depth[cell0 + i] = src[i * 4];
@@ -211,12 +222,17 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
     if (!normal) continue;
     i = 0;
     if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
-      for (; i + n <= width; i += n) {
+      const auto cells = [&](size_t at) {
         VF nx, ny, nz, nw;
-        hn::LoadInterleaved4(df, src + i * 4, nx, ny, nz, nw);
-        hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + i);
-        hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + i);
-        hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + i);
+        hn::LoadInterleaved4(df, src + at * 4, nx, ny, nz, nw);
+        hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + at);
+        hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + at);
+        hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         const glm::vec4 texel(src[i * 4], src[i * 4 + 1], src[i * 4 + 2], src[i * 4 + 3]);
