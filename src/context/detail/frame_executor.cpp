@@ -59,7 +59,7 @@ Surface* FrameExecutor::resolve(const RenderTargetRef& ref, const char* what) {
   return it->second;
 }
 
-std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding& binding) {
+std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding& binding, bool texel_reads) {
   if (binding.texture) return binding.texture;
   Surface* s = resolve(binding.render_target, "texture binding");
   if (pass_) {
@@ -80,10 +80,13 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
     textures_.push_back(texture);
     return texture;
   }
-  if (Texture2D::samples_in_place(s->format())) {
+  if (Texture2D::samples_in_place(s->format()) || texel_reads) {
     // Sampled in place, no copy: surfaces change only while a pass executes (close_pass), and a
     // surface the open pass samples is not one of its attachments (checked above), so its bytes
-    // stay as they are now until the pass's draws have run.
+    // stay as they are now until the pass's draws have run. A shader that only fetches texels
+    // decodes each one once whatever the format (the view's addresses are the copy's: the same
+    // texel bytes per pixel), so packed formats need no copy for it either; a later filtered
+    // reader in the pass samples the same view (the same values: decode_pixel).
     texture = Texture2D::view_of_surface(s->width(), s->height(), s->format(),
                                          s->pixel_bytes(0, 0), s->name());
   } else {
@@ -266,6 +269,7 @@ void FrameExecutor::draw_with_pass(const MeshPrimitive* mesh, const glm::dmat4& 
   ctx.target_width_px = pass_->desc.width_px;
   ctx.target_height_px = pass_->desc.height_px;
   ctx.resolve_texture = [this](const TextureBinding& b) { return texture_of(b); };
+  ctx.resolve_texel_source = [this](const TextureBinding& b) { return texture_of(b, true); };
   DrawFunctors f = pass.factory(ctx);
   if (!f.vertex) throw Error("shader '" + material.shader->name() + "' pass '" + pass.name + "' built no vertex shader");
   const PassState state = material.state_for(pass);

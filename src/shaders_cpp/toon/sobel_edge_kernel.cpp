@@ -221,7 +221,32 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
     }
     if (!normal) continue;
     i = 0;
-    if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
+    if (normal->surface_bytes && normal->surface_format == PixelFormat::RGB10A2_UNORM) {
+      // A view of 10-bit normals decoded on lanes straight from the words, with
+      // DecodeRgb10a2Kernel's operations (code / 1023, exact codes), then decode_normal.
+      const uint8_t* src =
+          normal->surface_bytes + (static_cast<size_t>(y) * normal->width + grid.x0) * 4;
+      const hn::RebindToUnsigned<DF> du;
+      const auto ten_bits = hn::Set(du, 0x3FFu);
+      const VF max10 = hn::Set(df, 1023.0f);
+      const auto channel = [&](hn::Vec<decltype(du)> code) {
+        return decode_normal(df, hn::Div(hn::ConvertTo(df, hn::BitCast(DI(), code)), max10),
+                             encoding);
+      };
+      const auto cells = [&](size_t at) {
+        const auto word = hn::LoadU(du, reinterpret_cast<const uint32_t*>(src + 4 * at));
+        hn::StoreU(channel(hn::And(word, ten_bits)), df, grid.normal[0] + cell0 + at);
+        hn::StoreU(channel(hn::And(hn::ShiftRight<10>(word), ten_bits)), df,
+                   grid.normal[1] + cell0 + at);
+        hn::StoreU(channel(hn::And(hn::ShiftRight<20>(word), ten_bits)), df,
+                   grid.normal[2] + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
+      }
+    } else if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
       const auto cells = [&](size_t at) {
         VF nx, ny, nz, nw;
         hn::LoadInterleaved4(df, src + at * 4, nx, ny, nz, nw);
