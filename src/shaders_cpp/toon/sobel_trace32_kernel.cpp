@@ -1,8 +1,7 @@
-// The Sobel pass's batch trace (sobel_trace_kernel.h) on 32-bit lanes, for planes whose
-// granules and byte offsets fit 32 bits (BatchTracePlanes::granules_fit_32): twice the lanes of
-// the 64-bit kernel, each granule an add and a shift from per-row and per-column terms, and the
-// usual per-fragment read pattern written with fixed stores. Integer arithmetic only, so every
-// SIMD target records the same granules.
+// The Sobel pass's batch trace (sobel_trace_kernel.h) on 32-bit lanes, for planes whose tags
+// fit (BatchTracePlanes::prepare_tags): twice the lanes of the 64-bit kernel, each granule an
+// add and a shift from per-row and per-column terms, and the common per-fragment read patterns
+// written with gathers. Integer arithmetic only, so every SIMD target records the same granules.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shaders_cpp/toon/sobel_trace32_kernel.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -80,7 +79,7 @@ struct PlaneLanes32 {
   }
 };
 
-// Writes `reads` granules of fragment f: table[offsets[i] + f] (tagged) plus untag[i], with
+// Writes `reads` granules of fragment f: table[offsets[i] + f] (its r) plus untag[i], with
 // gathers of up to 8 lanes (offsets and untag hold a multiple of 8 entries; the vectors may
 // write up to 7 entries past `reads`).
 HWY_INLINE void gather_reads(const uint32_t* table, int f, const int32_t* offsets,
@@ -95,10 +94,10 @@ HWY_INLINE void gather_reads(const uint32_t* table, int f, const int32_t* offset
   const size_t half = hn::Lanes(dh);
   const auto fragment = hn::Set(dgi, f);
   for (int i = 0; i < reads; i += static_cast<int>(hn::Lanes(dg))) {
-    const auto tagged = hn::GatherIndex(dg, table, hn::Add(hn::Load(dgi, offsets + i), fragment));
-    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::LowerHalf(dh, tagged)), hn::Load(dw, untag + i)), dw,
+    const auto r = hn::GatherIndex(dg, table, hn::Add(hn::Load(dgi, offsets + i), fragment));
+    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::LowerHalf(dh, r)), hn::Load(dw, untag + i)), dw,
                out + i);
-    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::UpperHalf(dh, tagged)),
+    hn::StoreU(hn::Add(hn::PromoteTo(dw, hn::UpperHalf(dh, r)),
                        hn::Load(dw, untag + i + half)),
                dw, out + i + half);
   }
@@ -255,9 +254,8 @@ uint64_t TracePlane::last_granule() const {
 }
 
 void BatchTracePlanes::prepare_tags() {
-  // Tagged offsets stay below 2^26 (byte offsets below 2^32), so four planes' tags fit 32 bits.
+  // r stays below 2^26 (byte offsets below 2^32); tags only tell planes apart.
   constexpr uint64_t kByteLimit = uint64_t{1} << 32;
-  constexpr uint32_t kTagSpan = uint32_t{1} << 26;
   const TracePlane* const plane[kPlanes] = {&depth, has_normal ? &normal : nullptr, &color,
                                             has_border ? &border : nullptr};
   tags_fit = false;
@@ -283,7 +281,7 @@ void BatchTracePlanes::prepare_tags() {
       tag[p] = tag[shared];
     } else {
       tag[p] = next_tag;
-      next_tag += kTagSpan;
+      ++next_tag;
     }
   }
   const TracePlane* const by_index[kPlanes] = {&depth, &normal, &color, &border};

@@ -51,17 +51,17 @@ inline constexpr uint32_t kReadPatternSlots[kReadPatterns] = {
 struct BatchTracePlanes {
   TracePlane depth, normal, color, border;
   bool has_normal = false, has_border = false;
-  // The 32-bit lane kernel's granule tags: granule = origin / 64 + r with r = (origin % 64 +
-  // texel offset in bytes) / 64, tagged tag[plane] + r, where planes with one origin share a
-  // tag and others' granules never meet (disjoint ranges). Set by prepare_tags(); tags_fit is
-  // false where a plane's bytes exceed 32 bits or planes overlap differently (64-bit kernel).
+  // The 32-bit lane kernel's planes: a granule is origin / 64 + r with r = (origin % 64 +
+  // texel offset in bytes) / 64, and the lanes hold r (below 2^26). Planes with one origin
+  // (one texture) share a tag and compare their r; planes with different tags never hold the
+  // same granule (disjoint ranges). Set by prepare_tags(); tags_fit is false where a plane's
+  // bytes reach 2^32 or planes overlap otherwise (the 64-bit kernel runs).
   enum PlaneIndex { kDepth, kNormal, kColor, kBorder, kPlanes };
   bool tags_fit = false;
   uint32_t tag[kPlanes] = {};
-  // Per slot, what turns its tagged granule back into the granule: origin / 64 - tag.
+  // Per slot, what turns its r back into the granule: its plane's origin / 64.
   uint64_t slot_untag[kTraceSlots] = {};
-  // Per read pattern, what turns the tagged granule of each of its reads (the first, then its
-  // kept slots in order) back into the granule.
+  // The same per read pattern, for each of its reads (the first, then its kept slots in order).
   alignas(64) uint64_t pattern_untag[kReadPatterns][kMaxPatternReads] = {};
   void prepare_tags();
   // The lane kernels index texels (and float channels) with 32-bit integers: every plane must
