@@ -14,6 +14,14 @@ std::shared_ptr<const Texture2D> DrawContext::texture(const std::string& name,
   return resolve_texture ? resolve_texture(*binding) : nullptr;
 }
 
+std::shared_ptr<const Texture2D> DrawContext::texel_source(const std::string& name) const {
+  const TextureBinding* binding = properties.get_texture(name);
+  if (!binding) return nullptr;
+  if (binding->texture) return binding->texture;
+  if (resolve_texel_source) return resolve_texel_source(*binding);
+  return resolve_texture ? resolve_texture(*binding) : nullptr;
+}
+
 const MeshPrimitive& DrawContext::require_mesh() const {
   if (!mesh) {
     throw Error("material '" + (material ? material->name : std::string("?")) +

@@ -38,12 +38,18 @@ struct DrawContext {
   int target_width_px = 0, target_height_px = 0;
   // Resolves a texture property (render targets become textures of their current contents).
   std::function<std::shared_ptr<const Texture2D>(const TextureBinding&)> resolve_texture;
+  // The same for a shader that only fetches texels (nearest, level 0, Texture2D::texel_view):
+  // a render target comes as a view of its surface in its stored format, whatever the format,
+  // with no decoded copy (empty: resolve_texture).
+  std::function<std::shared_ptr<const Texture2D>(const TextureBinding&)> resolve_texel_source;
 
   // The mesh of a mesh draw; throws ontile::Error naming the material when the pass is used
   // for a full-screen draw (blit) that has none.
   const MeshPrimitive& require_mesh() const;
   // The texture bound to `name` (null when unbound) and its sampler.
   std::shared_ptr<const Texture2D> texture(const std::string& name, SamplerDesc* sampler = nullptr) const;
+  // The texture bound to `name` (null when unbound) for texel fetches (resolve_texel_source).
+  std::shared_ptr<const Texture2D> texel_source(const std::string& name) const;
 };
 
 struct DrawFunctors {

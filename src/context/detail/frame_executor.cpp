@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <thread>
 
 #include "shaders_cpp/full_screen.h"
@@ -60,7 +59,7 @@ Surface* FrameExecutor::resolve(const RenderTargetRef& ref, const char* what) {
   return it->second;
 }
 
-std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding& binding) {
+std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding& binding, bool texel_reads) {
   if (binding.texture) return binding.texture;
   Surface* s = resolve(binding.render_target, "texture binding");
   if (pass_) {
@@ -81,22 +80,26 @@ std::shared_ptr<const Texture2D> FrameExecutor::texture_of(const TextureBinding&
     textures_.push_back(texture);
     return texture;
   }
-  if (Texture2D::samples_in_place(s->format())) {
+  if (Texture2D::samples_in_place(s->format()) || texel_reads) {
     // Sampled in place, no copy: surfaces change only while a pass executes (close_pass), and a
     // surface the open pass samples is not one of its attachments (checked above), so its bytes
-    // stay as they are now until the pass's draws have run.
+    // stay as they are now until the pass's draws have run. A shader that only fetches texels
+    // decodes each one once whatever the format (the view's addresses are the copy's: the same
+    // texel bytes per pixel), so packed formats need no copy for it either; a later filtered
+    // reader in the pass samples the same view (the same values: decode_pixel).
     texture = Texture2D::view_of_surface(s->width(), s->height(), s->format(),
                                          s->pixel_bytes(0, 0), s->name());
   } else {
-    // Packed formats: decoded once, a row at a time (decode_pixels: the values Surface::read
-    // gives, on SIMD lanes), cheaper than decoding at every texel read of the pass.
+    // Packed formats: decoded once, a row at a time straight into the texture's texels
+    // (decode_pixels: the values Surface::read gives, on SIMD lanes), cheaper than decoding at
+    // every texel read of the pass.
     const size_t row_floats = static_cast<size_t>(s->width()) * 4;
     std::vector<float> rgba(row_floats * s->height());
-    std::vector<glm::vec4> row(static_cast<size_t>(s->width()));
-    static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float) && alignof(glm::vec4) == alignof(float),
+                  "a row of vec4 is a row of floats");
     for (int y = 0; y < s->height(); ++y) {
-      decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(), row.data());
-      std::memcpy(rgba.data() + row_floats * y, row.data(), row_floats * sizeof(float));
+      decode_pixels(s->format(), s->pixel_bytes(0, y), s->width(),
+                    reinterpret_cast<glm::vec4*>(rgba.data() + row_floats * y));
     }
     texture = Texture2D::from_surface_texels(s->width(), s->height(), std::move(rgba),
                                              bytes_per_pixel(s->format()), s->name());
@@ -266,6 +269,7 @@ void FrameExecutor::draw_with_pass(const MeshPrimitive* mesh, const glm::dmat4& 
   ctx.target_width_px = pass_->desc.width_px;
   ctx.target_height_px = pass_->desc.height_px;
   ctx.resolve_texture = [this](const TextureBinding& b) { return texture_of(b); };
+  ctx.resolve_texel_source = [this](const TextureBinding& b) { return texture_of(b, true); };
   DrawFunctors f = pass.factory(ctx);
   if (!f.vertex) throw Error("shader '" + material.shader->name() + "' pass '" + pass.name + "' built no vertex shader");
   const PassState state = material.state_for(pass);

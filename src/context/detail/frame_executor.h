@@ -47,7 +47,10 @@ class FrameExecutor {
   };
 
   Surface* resolve(const RenderTargetRef& ref, const char* what);
-  std::shared_ptr<const Texture2D> texture_of(const TextureBinding& binding);
+  // The texture a binding samples: its texture, or a render target's contents (one texture per
+  // surface and pass). texel_reads: the shader only fetches texels, so packed formats come as
+  // surface views too (DrawContext::texel_source).
+  std::shared_ptr<const Texture2D> texture_of(const TextureBinding& binding, bool texel_reads = false);
   SubpassDesc& current_subpass(const char* what);
   void close_pass();
   void add_draw(DrawCall draw);

@@ -180,10 +180,10 @@ ToonShaderLibrary::ToonShaderLibrary(NormalEncoding encoding)
                       p.depth_linearization = DepthLinearization::from_projection(c.camera.projection);
                       p.view_ray_scale = view_ray_scale(c.camera.projection);
                       p.normal_encoding = e;
-                      const auto color = c.texture("_MainTex");
-                      const auto depth = c.texture("_DepthTex");
-                      const auto normal = c.texture("_NormalTex");
-                      const auto border = c.texture("_BorderTex");
+                      const auto color = c.texel_source("_MainTex");
+                      const auto depth = c.texel_source("_DepthTex");
+                      const auto normal = c.texel_source("_NormalTex");
+                      const auto border = c.texel_source("_BorderTex");
                       p.color = color.get();
                       p.depth = depth.get();
                       p.normal = normal.get();

@@ -9,9 +9,9 @@ namespace ontile {
 namespace {
 
 DrawFunctors sobel_functors(const DrawContext& ctx) {
-  const auto color = ctx.texture("_MainTex");
-  const auto depth = ctx.texture("_CameraDepthTexture");
-  const auto normals = ctx.texture("_CameraNormalsTexture");
+  const auto color = ctx.texel_source("_MainTex");
+  const auto depth = ctx.texel_source("_CameraDepthTexture");
+  const auto normals = ctx.texel_source("_CameraNormalsTexture");
   SobelEdgeParams p;
   p.color = color.get();
   p.depth = depth.get();

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <climits>
+#include <cmath>
 #include <cstring>
 
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
@@ -70,6 +71,17 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
   const DF df;
   const DI di;
   const size_t n = hn::Lanes(df);
+  // The layout in locals: the stores to taps could alias it otherwise.
+  const TapLayout l = layout;
+  // With ordered offsets below 2^100 in magnitude, tap 0 <= tap 1 <= tap 2 on every lane:
+  // u + offset is monotonic and cannot overflow to infinity for a finite u (that takes a sum
+  // of 2^128 - 2^103), every step of nearest_clamped_texel is monotonic, and a non-finite u
+  // gives texel 0 for all taps. So the box needs only the outer taps.
+  const auto ordered = [](const float (&o)[kTapsPerAxis]) {
+    constexpr float kSmall = 1.2676506e30f;  // 2^100
+    return std::fabs(o[0]) < kSmall && std::fabs(o[2]) < kSmall && o[0] <= o[1] && o[1] <= o[2];
+  };
+  const bool outer_taps_bound = ordered(l.offset_u) && ordered(l.offset_v);
   VI min_x = hn::Set(di, INT32_MAX), min_y = min_x;
   VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
@@ -77,19 +89,26 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
     const hn::Mask<DI> on = lanes_of(di, active >> f);
     VI x[kTapsPerAxis], y[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
-      x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, layout.offset_u[a])),
-                                   layout.grid_width);
-      y[a] = nearest_clamped_texel(df, hn::Add(vf, hn::Set(df, layout.offset_v[a])),
-                                   layout.grid_height);
+      x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, l.offset_u[a])), l.grid_width);
+      y[a] = nearest_clamped_texel(df, hn::Add(vf, hn::Set(df, l.offset_v[a])), l.grid_height);
       hn::Store(x[a], di, taps.x[a] + f);
       hn::Store(y[a], di, taps.y[a] + f);
-      min_x = hn::Min(min_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MAX)));
-      min_y = hn::Min(min_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MAX)));
-      max_x = hn::Max(max_x, hn::IfThenElse(on, x[a], hn::Set(di, INT32_MIN)));
-      max_y = hn::Max(max_y, hn::IfThenElse(on, y[a], hn::Set(di, INT32_MIN)));
     }
-    const VI color_x = nearest_clamped_texel(df, uf, layout.color_width);
-    const VI color_y = nearest_clamped_texel(df, vf, layout.color_height);
+    const auto widen = [&](VI lo, VI hi, VI& box_min_x, VI& box_max_x) {
+      box_min_x = hn::Min(box_min_x, hn::IfThenElse(on, lo, hn::Set(di, INT32_MAX)));
+      box_max_x = hn::Max(box_max_x, hn::IfThenElse(on, hi, hn::Set(di, INT32_MIN)));
+    };
+    if (outer_taps_bound) {
+      widen(x[0], x[2], min_x, max_x);
+      widen(y[0], y[2], min_y, max_y);
+    } else {
+      for (int a = 0; a < kTapsPerAxis; ++a) {
+        widen(x[a], x[a], min_x, max_x);
+        widen(y[a], y[a], min_y, max_y);
+      }
+    }
+    const VI color_x = nearest_clamped_texel(df, uf, l.color_width);
+    const VI color_y = nearest_clamped_texel(df, vf, l.color_height);
     hn::Store(color_x, di, taps.color_x + f);
     hn::Store(color_y, di, taps.color_y + f);
   }
@@ -161,10 +180,16 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
                                 depth.surface_format == PixelFormat::R32_FLOAT)) {
       // One float per texel, stored as is: decode_pixel gives (d, 0, 0, 1) with d these bits.
       const uint8_t* src = depth.surface_bytes + (static_cast<size_t>(y) * depth.width + grid.x0) * 4;
-      for (; i + n <= width; i += n) {
-        const VF d = hn::LoadU(df, reinterpret_cast<const float*>(src + 4 * i));
-        hn::StoreU(d, df, grid.depth + cell0 + i);
-        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+      const auto cells = [&](size_t at) {
+        const VF d = hn::LoadU(df, reinterpret_cast<const float*>(src + 4 * at));
+        hn::StoreU(d, df, grid.depth + cell0 + at);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      // The tail as the last full vector of the row: cells decoded twice get the same bits.
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         float d;
@@ -173,11 +198,16 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
         grid.linear_z[cell0 + i] = linearize_one(d, decode);
       }
     } else if (const float* src = float_row(depth, grid.x0, y, grid.width, row_texels)) {
-      for (; i + n <= width; i += n) {
+      const auto cells = [&](size_t at) {
         VF d, g, b, a;
-        hn::LoadInterleaved4(df, src + i * 4, d, g, b, a);
-        hn::StoreU(d, df, grid.depth + cell0 + i);
-        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + i);
+        hn::LoadInterleaved4(df, src + at * 4, d, g, b, a);
+        hn::StoreU(d, df, grid.depth + cell0 + at);
+        hn::StoreU(linearize(df, d, decode), df, grid.linear_z + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         grid.depth[cell0 + i] = src[i * 4];
@@ -191,13 +221,43 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
     }
     if (!normal) continue;
     i = 0;
-    if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
-      for (; i + n <= width; i += n) {
+    if (normal->surface_bytes && normal->surface_format == PixelFormat::RGB10A2_UNORM) {
+      // A view of 10-bit normals decoded on lanes straight from the words, with
+      // DecodeRgb10a2Kernel's operations (code / 1023, exact codes), then decode_normal.
+      const uint8_t* src =
+          normal->surface_bytes + (static_cast<size_t>(y) * normal->width + grid.x0) * 4;
+      const hn::RebindToUnsigned<DF> du;
+      const auto ten_bits = hn::Set(du, 0x3FFu);
+      const VF max10 = hn::Set(df, 1023.0f);
+      const auto channel = [&](hn::Vec<decltype(du)> code) {
+        return decode_normal(df, hn::Div(hn::ConvertTo(df, hn::BitCast(DI(), code)), max10),
+                             encoding);
+      };
+      const auto cells = [&](size_t at) {
+        const auto word = hn::LoadU(du, reinterpret_cast<const uint32_t*>(src + 4 * at));
+        hn::StoreU(channel(hn::And(word, ten_bits)), df, grid.normal[0] + cell0 + at);
+        hn::StoreU(channel(hn::And(hn::ShiftRight<10>(word), ten_bits)), df,
+                   grid.normal[1] + cell0 + at);
+        hn::StoreU(channel(hn::And(hn::ShiftRight<20>(word), ten_bits)), df,
+                   grid.normal[2] + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
+      }
+    } else if (const float* src = float_row(*normal, grid.x0, y, grid.width, row_texels)) {
+      const auto cells = [&](size_t at) {
         VF nx, ny, nz, nw;
-        hn::LoadInterleaved4(df, src + i * 4, nx, ny, nz, nw);
-        hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + i);
-        hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + i);
-        hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + i);
+        hn::LoadInterleaved4(df, src + at * 4, nx, ny, nz, nw);
+        hn::StoreU(decode_normal(df, nx, encoding), df, grid.normal[0] + cell0 + at);
+        hn::StoreU(decode_normal(df, ny, encoding), df, grid.normal[1] + cell0 + at);
+        hn::StoreU(decode_normal(df, nz, encoding), df, grid.normal[2] + cell0 + at);
+      };
+      for (; i + n <= width; i += n) cells(i);
+      if (i < width && width >= n) {
+        cells(width - n);
+        i = width;
       }
       for (; i < width; ++i) {
         const glm::vec4 texel(src[i * 4], src[i * 4 + 1], src[i * 4 + 2], src[i * 4 + 3]);

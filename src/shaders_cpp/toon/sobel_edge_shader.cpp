@@ -149,6 +149,7 @@ SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
   if (p_.normal) trace_planes_.normal = sobel::TracePlane(normal_);
   trace_planes_.has_border = p_.border != nullptr;
   if (p_.border) trace_planes_.border = sobel::TracePlane(border_);
+  trace_planes_.prepare_tags();
   batch_lanes_ = sobel::BatchTracePlanes::fits_lanes(depth_, color_);
 }
 

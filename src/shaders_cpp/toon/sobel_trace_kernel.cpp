@@ -150,6 +150,15 @@ bool BatchTracePlanes::fits_lanes(const Texture2D::TexelView& depth,
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule) {
+  if (planes.tags_fit) {
+    return trace_batch_32(planes, taps, edges, count, active, granules, last_granule);
+  }
+  return trace_batch_64(planes, taps, edges, count, active, granules, last_granule);
+}
+
+int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                   const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
+                   uint64_t& last_granule) {
   return HWY_DYNAMIC_DISPATCH(TraceBatchKernel)(planes, taps, edges, count, active, granules,
                                                 last_granule);
 }

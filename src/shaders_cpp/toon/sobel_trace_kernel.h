@@ -3,6 +3,7 @@
 // consecutive repeats dropped, exactly as TapTrace::fragment and TapTrace::border record them.
 #pragma once
 #include <cstdint>
+#include <initializer_list>
 
 #include "raster/texture.h"
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
@@ -13,24 +14,61 @@ namespace ontile::sobel {
 struct TracePlane {
   uint64_t origin = 0;
   uint64_t texel_bytes = 0;
-  int width = 0;
+  int width = 0, height = 0;
   TracePlane() = default;
   explicit TracePlane(const Texture2D::TexelView& v)
-      : origin(v.address), texel_bytes(v.memory_bytes_per_texel), width(v.width) {}
-};
-
-// The planes a batch reads. Depth, normal and border share the depth grid's size.
-struct BatchTracePlanes {
-  TracePlane depth, normal, color, border;
-  bool has_normal = false, has_border = false;
-  // The lane kernels index texels (and float channels) with 32-bit integers: every plane must
-  // hold fewer than 2^29 texels (callers fall back to TapTrace::fragment otherwise).
-  static bool fits_lanes(const Texture2D::TexelView& depth, const Texture2D::TexelView& color);
+      : origin(v.address), texel_bytes(v.memory_bytes_per_texel), width(v.width),
+        height(v.height) {}
+  uint64_t first_granule() const { return origin >> 6; }
+  uint64_t last_granule() const;  // of the last texel's last byte
 };
 
 // Reads per fragment in sampling order: 9 depth taps, the normal centre, the other 8 normal
 // taps, the colour, the border.
 constexpr int kTraceSlots = 2 * kTaps + 2;
+
+// The read patterns most fragments of a full-screen pass take, as the slots a fragment keeps
+// after its first (bit s: slot s differs from the read before it; slots as in trace_batch:
+// depth taps 0-8, normal centre 9, other normal taps 10-17, colour 18, border 19), with
+// normals: every tap row in one granule of its plane and no edge; the left or the right
+// column in the neighbouring granule; a depth edge (no normal taps besides the centre)
+// without and with a border read. The 32-bit kernel writes those with gathers.
+constexpr int kReadPatterns = 5;
+constexpr int kMaxPatternReads = 16;
+constexpr uint32_t slot_bits(std::initializer_list<int> slots) {
+  uint32_t bits = 0;
+  for (int s : slots) bits |= uint32_t{1} << s;
+  return bits;
+}
+inline constexpr uint32_t kReadPatternSlots[kReadPatterns] = {
+    slot_bits({3, 6, 9, 10, 13, 15, 18}),
+    slot_bits({1, 3, 4, 6, 7, 9, 10, 11, 13, 14, 15, 16, 18}),
+    slot_bits({2, 3, 5, 6, 8, 9, 10, 12, 13, 14, 15, 17, 18}),
+    slot_bits({3, 6, 9, 18}),
+    slot_bits({3, 6, 9, 18, 19})};
+
+// The planes a batch reads. Depth, normal and border share the depth grid's size.
+struct BatchTracePlanes {
+  TracePlane depth, normal, color, border;
+  bool has_normal = false, has_border = false;
+  // The 32-bit lane kernel's planes: a granule is origin / 64 + r with r = (origin % 64 +
+  // texel offset in bytes) / 64, and the lanes hold r (below 2^26). Planes with one origin
+  // (one texture) share a tag and compare their r; planes with different tags never hold the
+  // same granule (disjoint ranges). Set by prepare_tags(); tags_fit is false where a plane's
+  // bytes reach 2^32 or planes overlap otherwise (the 64-bit kernel runs).
+  enum PlaneIndex { kDepth, kNormal, kColor, kBorder, kPlanes };
+  bool tags_fit = false;
+  uint32_t tag[kPlanes] = {};
+  // Per slot, what turns its r back into the granule: its plane's origin / 64.
+  uint64_t slot_untag[kTraceSlots] = {};
+  // The same per read pattern, for each of its reads (the first, then its kept slots in order).
+  alignas(64) uint64_t pattern_untag[kReadPatterns][kMaxPatternReads] = {};
+  void prepare_tags();
+  // The lane kernels index texels (and float channels) with 32-bit integers: every plane must
+  // hold fewer than 2^29 texels (callers fall back to TapTrace::fragment otherwise).
+  static bool fits_lanes(const Texture2D::TexelView& depth, const Texture2D::TexelView& color);
+};
+
 
 // Writes, for each fragment f < count whose bit is set in `active` (in ascending f), the
 // granules (byte address / 64) of its reads as sobel_edge_shader.h lists them: the 9 depth
@@ -42,5 +80,13 @@ constexpr int kTraceSlots = 2 * kTaps + 2;
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule);
+// trace_batch's two kernels, the same granules: 64-bit lanes for any planes, and 32-bit lanes
+// (twice the lanes) for planes whose tags fit (prepare_tags), which trace_batch takes then.
+int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                   const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
+                   uint64_t& last_granule);
+int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                   const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
+                   uint64_t& last_granule);
 
 }  // namespace ontile::sobel
