@@ -1,7 +1,7 @@
 // The universal pipeline's batched functor code against the scalar code it replaced, bit for
 // bit: the shadow PCF of a whole batch and its texel trace (main_light_visibility per kept
-// fragment, quad by quad), the tone curves on lanes, on every SIMD target; and the Lit lighting
-// loops against the per-fragment Blinn-Phong with point, spot and directional lights.
+// fragment, quad by quad), the tone curves on lanes, and the Lit lighting lanes against the
+// per-fragment Blinn-Phong with point, spot and directional lights, on every SIMD target.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -179,13 +179,16 @@ glm::vec3 scalar_lighting(const UniversalLitParams& p, glm::vec3 n_f, glm::vec3 
   return rgb;
 }
 
-TEST(UniversalLitLighting, BatchLoopsMatchPerFragmentBlinnPhong) {
+TEST(UniversalLitLighting, BatchLanesMatchPerFragmentBlinnPhongOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  const std::vector<std::string> targets = simd_targets();
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f), coordinate(-4.0f, 4.0f);
   auto batch = std::make_unique<FragmentBatch>();
   batch->quad_count = kBatchQuads;
   const int count = kBatchFragments;
-  for (int round = 0; round < 40; ++round) {
+  for (int round = 0; round < 40 * static_cast<int>(targets.size()); ++round) {
+    force_simd_target(targets[(round / 20) % targets.size()]);  // blocks: every light count per target
     UniversalLitParams p;
     p.metallic = round % 4 == 0 ? 0.0f : unit(rng);
     p.smoothness = unit(rng);

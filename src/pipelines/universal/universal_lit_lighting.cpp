@@ -1,152 +1,186 @@
-// Batched Universal Lit lighting (see universal_lit_lighting.h). Each loop mirrors one step of
-// the scalar per-fragment code it replaced, in its evaluation order: glm's vector operators
-// are per component, glm::dot is (x + y) + z of the products, glm::length its square root.
-#include "pipelines/universal/universal_lit_lighting.h"
+// Batched Universal Lit lighting (see universal_lit_lighting.h) on SIMD lanes, compiled per
+// target by Highway's foreach_target. Each step mirrors the scalar per-fragment code in its
+// evaluation order (glm's vector operators per component, glm::dot as (x + y) + z of the
+// products, glm::length its square root, branches as selects), with IEEE operations only and no
+// FMA, so every target gives the same bits; the lights stay in registers across a vector of
+// fragments. std::pow (a material exponent) is called per shaded lane as before.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "pipelines/universal/universal_lit_lighting.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
 
-#include "pipelines/universal/universal_lit_functors.h"
-
+#include <bit>
 #include <cmath>
 
+#include "pipelines/universal/universal_lit_functors.h"
+#include "pipelines/universal/universal_lit_lighting.h"
+
+HWY_BEFORE_NAMESPACE();
 namespace ontile {
-namespace {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
 
-using Lanes3 = float[3][kBatchFragments];
+using DF = hn::ScalableTag<float>;
+using DI = hn::RebindToSigned<DF>;
+using VF = hn::Vec<DF>;
+using MF = hn::Mask<DF>;
 
-struct SurfaceLanes {
-  const Lanes3& normal;
-  const Lanes3& to_view;
-  const Lanes3& diffuse;
-  const Lanes3& specular;
+alignas(64) constexpr int32_t kLaneBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
+                                              1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
+                                              1 << 12, 1 << 13, 1 << 14, 1 << 15};
+
+// The bits of a mask's lanes (lane i: bit i).
+HWY_INLINE uint32_t mask_bits(DF, MF m) {
+  const DI di;
+  return static_cast<uint32_t>(
+      hn::GetLane(hn::SumOfLanes(di, hn::IfThenElseZero(hn::RebindMask(di, m), hn::LoadU(di, kLaneBit)))));
+}
+
+struct Surface {
+  VF n[3], v[3], diffuse[3], specular[3];
 };
 
-// rgb += blinn_phong(diffuse, specular, shininess, n, to_view, to_light, radiance) per fragment;
-// fragments not in `lit` or facing away (!(N.L > 0)) add vec3(0), as the scalar early return.
-void add_blinn_phong(const SurfaceLanes& s, const Lanes3& to_light, const Lanes3& radiance, float shininess,
-                     uint64_t lit, int count, Lanes3& rgb) {
-  alignas(64) float n_dot_l[kBatchFragments], n_dot_h[kBatchFragments], power[kBatchFragments];
-  const Lanes3& n = s.normal;
-  for (int f = 0; f < count; ++f) {
-    n_dot_l[f] = (n[0][f] * to_light[0][f] + n[1][f] * to_light[1][f]) + n[2][f] * to_light[2][f];
-    const float hx = to_light[0][f] + s.to_view[0][f];
-    const float hy = to_light[1][f] + s.to_view[1][f];
-    const float hz = to_light[2][f] + s.to_view[2][f];
-    const float half_length = std::sqrt((hx * hx + hy * hy) + hz * hz);
-    const bool has_length = half_length > 0.0f;
-    const float divisor = has_length ? half_length : 1.0f;  // divide only by the length it uses
-    const float d = (n[0][f] * (hx / divisor) + n[1][f] * (hy / divisor)) + n[2][f] * (hz / divisor);
-    n_dot_h[f] = has_length ? (d < 0.0f ? 0.0f : d) : 0.0f;  // glm::max(d, 0)
-  }
-  for (int f = 0; f < count; ++f) {
-    const bool shaded = ((lit >> f) & 1u) && n_dot_l[f] > 0.0f;
-    power[f] = shaded ? std::pow(n_dot_h[f], shininess) : 0.0f;
+// rgb += blinn_phong(...) for one vector of fragments; `lit`: the fragments that may be shaded
+// (the others add the term with a power of 0, as the scalar loop).
+HWY_INLINE void add_blinn_phong(DF df, const Surface& s, const VF l[3], const VF radiance[3], float shininess,
+                                MF lit, VF rgb[3]) {
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const VF n_dot_l = hn::Add(hn::Add(hn::Mul(s.n[0], l[0]), hn::Mul(s.n[1], l[1])), hn::Mul(s.n[2], l[2]));
+  const VF hx = hn::Add(l[0], s.v[0]), hy = hn::Add(l[1], s.v[1]), hz = hn::Add(l[2], s.v[2]);
+  const VF half_length = hn::Sqrt(hn::Add(hn::Add(hn::Mul(hx, hx), hn::Mul(hy, hy)), hn::Mul(hz, hz)));
+  const MF has_length = hn::Gt(half_length, zero);
+  const VF divisor = hn::IfThenElse(has_length, half_length, one);
+  const VF d = hn::Add(hn::Add(hn::Mul(s.n[0], hn::Div(hx, divisor)), hn::Mul(s.n[1], hn::Div(hy, divisor))),
+                       hn::Mul(s.n[2], hn::Div(hz, divisor)));
+  const VF n_dot_h = hn::IfThenElseZero(has_length, hn::IfThenElse(hn::Lt(d, zero), zero, d));
+  const MF facing = hn::Gt(n_dot_l, zero);
+  VF power = zero;
+  const uint32_t shaded = mask_bits(df, hn::And(lit, facing));
+  if (shaded != 0) {
+    alignas(64) float base[HWY_MAX_BYTES / sizeof(float)], raised[HWY_MAX_BYTES / sizeof(float)] = {};
+    hn::Store(n_dot_h, df, base);
+    for (uint32_t rest = shaded; rest != 0; rest &= rest - 1) {
+      const int lane = std::countr_zero(rest);
+      raised[lane] = std::pow(base[lane], shininess);
+    }
+    power = hn::Load(df, raised);
   }
   for (int c = 0; c < 3; ++c) {
-    for (int f = 0; f < count; ++f) {
-      const float term = (radiance[c][f] * n_dot_l[f]) * (s.diffuse[c][f] + s.specular[c][f] * power[f]);
-      rgb[c][f] = rgb[c][f] + (n_dot_l[f] > 0.0f ? term : 0.0f);
-    }
+    const VF term = hn::Mul(hn::Mul(radiance[c], n_dot_l), hn::Add(s.diffuse[c], hn::Mul(s.specular[c], power)));
+    rgb[c] = hn::Add(rgb[c], hn::IfThenElseZero(facing, term));
   }
 }
 
-// The additional light's to_light and radiance per fragment (the scalar loop's preamble,
-// range_attenuation x spot_attenuation with light_to_surface = -to_light).
-void additional_light_lanes(const AdditionalLight& light, const FragmentBatch& batch, const Lanes3& normal,
-                            int count, Lanes3& to_light, Lanes3& radiance) {
+// An additional light's to_light and radiance for one vector of fragments at world positions p
+// (the scalar loop's preamble: range_attenuation x spot_attenuation, light_to_surface = -l).
+HWY_INLINE void additional_light(DF df, const AdditionalLight& light, const VF p[3], const VF normal[3], VF l[3],
+                                 VF radiance[3]) {
   if (light.type == AdditionalLight::Type::Directional) {
     for (int c = 0; c < 3; ++c) {
-      const float l = -light.direction[c], intensity = light.intensity[c];
-      for (int f = 0; f < count; ++f) {
-        to_light[c][f] = l;
-        radiance[c][f] = intensity;
-      }
+      l[c] = hn::Set(df, -light.direction[c]);
+      radiance[c] = hn::Set(df, light.intensity[c]);
     }
     return;
   }
-  const float* px = batch.varyings[MeshVertexShader::kWorldPos];
-  const float* py = batch.varyings[MeshVertexShader::kWorldPos + 1];
-  const float* pz = batch.varyings[MeshVertexShader::kWorldPos + 2];
-  const glm::vec3 p = light.position, direction = light.direction;
-  const bool infinite_range = light.range <= 0.0f;
-  const float range2 = light.range * light.range;
-  const bool spot = light.type == AdditionalLight::Type::Spot;
-  alignas(64) float falloff[kBatchFragments];
-  for (int f = 0; f < count; ++f) {
-    const float ox = p.x - px[f], oy = p.y - py[f], oz = p.z - pz[f];
-    const float distance_squared = (ox * ox + oy * oy) + oz * oz;
-    const bool has_length = distance_squared > 0.0f;
-    const float length = std::sqrt(has_length ? distance_squared : 1.0f);
-    const float lx = has_length ? ox / length : normal[0][f];
-    const float ly = has_length ? oy / length : normal[1][f];
-    const float lz = has_length ? oz / length : normal[2][f];
-    // range_attenuation(distance_squared, light.range)
-    const float d2 = distance_squared < 1e-4f ? 1e-4f : distance_squared;  // std::max
-    const float ratio2 = d2 / range2;
-    const float window_raw = 1.0f - ratio2 * ratio2;
-    const float window_low = window_raw < 0.0f ? 0.0f : window_raw;  // std::clamp
-    const float window = 1.0f < window_low ? 1.0f : window_low;
-    const float range_factor = infinite_range ? 1.0f / d2 : window / d2;
-    // spot_attenuation(light, -to_light)
-    const float cd = (direction.x * -lx + direction.y * -ly) + direction.z * -lz;
-    const float a_raw = cd * light.spot_scale + light.spot_offset;
-    const float a_low = a_raw < 0.0f ? 0.0f : a_raw;
-    const float a = 1.0f < a_low ? 1.0f : a_low;
-    falloff[f] = range_factor * (spot ? a * a : 1.0f);
-    to_light[0][f] = lx;
-    to_light[1][f] = ly;
-    to_light[2][f] = lz;
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  VF o[3];
+  for (int c = 0; c < 3; ++c) o[c] = hn::Sub(hn::Set(df, light.position[c]), p[c]);
+  const VF distance_squared = hn::Add(hn::Add(hn::Mul(o[0], o[0]), hn::Mul(o[1], o[1])), hn::Mul(o[2], o[2]));
+  const MF has_length = hn::Gt(distance_squared, zero);
+  const VF length = hn::Sqrt(hn::IfThenElse(has_length, distance_squared, one));
+  for (int c = 0; c < 3; ++c) l[c] = hn::IfThenElse(has_length, hn::Div(o[c], length), normal[c]);
+  const VF d2 = hn::IfThenElse(hn::Lt(distance_squared, hn::Set(df, 1e-4f)), hn::Set(df, 1e-4f), distance_squared);
+  VF range_factor;
+  if (light.range <= 0.0f) {
+    range_factor = hn::Div(one, d2);
+  } else {
+    const VF ratio2 = hn::Div(d2, hn::Set(df, light.range * light.range));
+    const VF window_raw = hn::Sub(one, hn::Mul(ratio2, ratio2));
+    const VF window_low = hn::IfThenElse(hn::Lt(window_raw, zero), zero, window_raw);
+    const VF window = hn::IfThenElse(hn::Lt(one, window_low), one, window_low);
+    range_factor = hn::Div(window, d2);
   }
-  for (int c = 0; c < 3; ++c) {
-    const float intensity = light.intensity[c];
-    for (int f = 0; f < count; ++f) radiance[c][f] = intensity * falloff[f];
+  VF spot_factor = one;
+  if (light.type == AdditionalLight::Type::Spot) {
+    const VF cd = hn::Add(hn::Add(hn::Mul(hn::Set(df, light.direction.x), hn::Neg(l[0])),
+                                  hn::Mul(hn::Set(df, light.direction.y), hn::Neg(l[1]))),
+                          hn::Mul(hn::Set(df, light.direction.z), hn::Neg(l[2])));
+    const VF a_raw = hn::Add(hn::Mul(cd, hn::Set(df, light.spot_scale)), hn::Set(df, light.spot_offset));
+    const VF a_low = hn::IfThenElse(hn::Lt(a_raw, zero), zero, a_raw);
+    const VF a = hn::IfThenElse(hn::Lt(one, a_low), one, a_low);
+    spot_factor = hn::Mul(a, a);
+  }
+  const VF falloff = hn::Mul(range_factor, spot_factor);
+  for (int c = 0; c < 3; ++c) radiance[c] = hn::Mul(hn::Set(df, light.intensity[c]), falloff);
+}
+
+void UniversalLitLightingKernel(const UniversalLitParams& p, const FragmentBatch& batch,
+                                const float (&normal)[3][kBatchFragments], const float (&albedo)[4][kBatchFragments],
+                                const float* visibility, uint64_t lit, int count, float (&rgb)[3][kBatchFragments]) {
+  const DF df;
+  const DI di;
+  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const float* position[3] = {batch.varyings[MeshVertexShader::kWorldPos],
+                              batch.varyings[MeshVertexShader::kWorldPos + 1],
+                              batch.varyings[MeshVertexShader::kWorldPos + 2]};
+  // diffuse = base x (1 - metallic); specular = glm::mix(vec3(0.04), base, metallic) =
+  // 0.04 x (1 - metallic) + base x metallic; rgb = ambient x (diffuse + specular).
+  const VF dielectric = hn::Set(df, 1.0f - p.metallic);
+  const VF specular_floor = hn::Set(df, 0.04f * (1.0f - p.metallic));
+  const VF metallic = hn::Set(df, p.metallic);
+  const float shininess = std::exp2(10.0f * p.smoothness + 1.0f);
+  for (size_t f = 0; f < static_cast<size_t>(count); f += hn::Lanes(df)) {
+    const MF on = hn::RebindMask(
+        df, hn::Ne(hn::And(hn::Set(di, static_cast<int32_t>((lit >> f) & 0xFFFFu)), hn::LoadU(di, kLaneBit)),
+                   hn::Zero(di)));
+    Surface s;
+    VF world[3];
+    for (int c = 0; c < 3; ++c) {
+      s.n[c] = hn::Load(df, normal[c] + f);
+      world[c] = hn::Load(df, position[c] + f);
+    }
+    VF t[3];
+    for (int c = 0; c < 3; ++c) t[c] = hn::Sub(hn::Set(df, p.camera_position[c]), world[c]);
+    const VF camera_distance = hn::Sqrt(hn::Add(hn::Add(hn::Mul(t[0], t[0]), hn::Mul(t[1], t[1])), hn::Mul(t[2], t[2])));
+    const MF has_distance = hn::Gt(camera_distance, zero);
+    const VF divisor = hn::IfThenElse(has_distance, camera_distance, one);
+    VF colour[3];
+    for (int c = 0; c < 3; ++c) {
+      s.v[c] = hn::IfThenElse(has_distance, hn::Div(t[c], divisor), s.n[c]);
+      const VF base = hn::Load(df, albedo[c] + f);
+      s.diffuse[c] = hn::Mul(base, dielectric);
+      s.specular[c] = hn::Add(specular_floor, hn::Mul(base, metallic));
+      colour[c] = hn::Mul(hn::Set(df, p.ambient[c]), hn::Add(s.diffuse[c], s.specular[c]));
+    }
+    VF l[3], radiance[3];
+    for (int c = 0; c < 3; ++c) {
+      l[c] = hn::Set(df, p.main_light.to_light[c]);
+      const VF r = hn::Set(df, p.main_light.radiance[c]);
+      radiance[c] = visibility ? hn::Mul(r, hn::LoadU(df, visibility + f)) : r;
+    }
+    add_blinn_phong(df, s, l, radiance, shininess, on, colour);
+    for (int i = 0; i < p.additional_light_count; ++i) {
+      additional_light(df, p.additional_lights[i], world, s.n, l, radiance);
+      add_blinn_phong(df, s, l, radiance, shininess, on, colour);
+    }
+    for (int c = 0; c < 3; ++c) hn::Store(colour[c], df, rgb[c] + f);
   }
 }
 
-}  // namespace
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
 
-void universal_lit_lighting(const UniversalLitParams& p, const FragmentBatch& batch, const Lanes3& normal,
-                            const float (&albedo)[4][kBatchFragments], const float* visibility, uint64_t lit,
-                            int count, Lanes3& rgb) {
-  alignas(64) Lanes3 to_view, diffuse, specular, to_light, radiance;
-  const float* px = batch.varyings[MeshVertexShader::kWorldPos];
-  const float* py = batch.varyings[MeshVertexShader::kWorldPos + 1];
-  const float* pz = batch.varyings[MeshVertexShader::kWorldPos + 2];
-  const glm::vec3 camera = p.camera_position;
-  for (int f = 0; f < count; ++f) {
-    const float tx = camera.x - px[f], ty = camera.y - py[f], tz = camera.z - pz[f];
-    const float camera_distance = std::sqrt((tx * tx + ty * ty) + tz * tz);
-    const bool has_distance = camera_distance > 0.0f;
-    const float divisor = has_distance ? camera_distance : 1.0f;
-    to_view[0][f] = has_distance ? tx / divisor : normal[0][f];
-    to_view[1][f] = has_distance ? ty / divisor : normal[1][f];
-    to_view[2][f] = has_distance ? tz / divisor : normal[2][f];
-  }
-  // diffuse = base x (1 - metallic); specular = glm::mix(vec3(0.04), base, metallic) =
-  // 0.04 x (1 - metallic) + base x metallic; rgb = ambient x (diffuse + specular).
-  const float dielectric = 1.0f - p.metallic;
-  const float specular_floor = 0.04f * (1.0f - p.metallic);
-  for (int c = 0; c < 3; ++c) {
-    const float ambient = p.ambient[c];
-    for (int f = 0; f < count; ++f) {
-      const float base = albedo[c][f];
-      diffuse[c][f] = base * dielectric;
-      specular[c][f] = specular_floor + base * p.metallic;
-      rgb[c][f] = ambient * (diffuse[c][f] + specular[c][f]);
-    }
-  }
-  const SurfaceLanes surface{normal, to_view, diffuse, specular};
-  const float shininess = std::exp2(10.0f * p.smoothness + 1.0f);
-  for (int c = 0; c < 3; ++c) {
-    const float l = p.main_light.to_light[c], r = p.main_light.radiance[c];
-    for (int f = 0; f < count; ++f) {
-      to_light[c][f] = l;
-      radiance[c][f] = visibility ? r * visibility[f] : r;
-    }
-  }
-  add_blinn_phong(surface, to_light, radiance, shininess, lit, count, rgb);
-  for (int i = 0; i < p.additional_light_count; ++i) {
-    additional_light_lanes(p.additional_lights[i], batch, normal, count, to_light, radiance);
-    add_blinn_phong(surface, to_light, radiance, shininess, lit, count, rgb);
-  }
+#if HWY_ONCE
+namespace ontile {
+
+HWY_EXPORT(UniversalLitLightingKernel);
+
+void universal_lit_lighting(const UniversalLitParams& p, const FragmentBatch& batch,
+                            const float (&normal)[3][kBatchFragments], const float (&albedo)[4][kBatchFragments],
+                            const float* visibility, uint64_t lit, int count, float (&rgb)[3][kBatchFragments]) {
+  HWY_DYNAMIC_DISPATCH(UniversalLitLightingKernel)(p, batch, normal, albedo, visibility, lit, count, rgb);
 }
 
 }  // namespace ontile
+#endif  // HWY_ONCE
