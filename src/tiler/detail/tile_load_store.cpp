@@ -44,6 +44,17 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
                            int samples, const TileMemory& memory, int attachment, bool store,
                            bool resolve) {
   const int n = rect.width * samples;
+  // Colour stores without a resolve: the whole tile in one call (rows of tile memory are
+  // memory.width() * samples values apart, the surface's rows its row pitch).
+  const bool whole_tile_store = store && !is_depth && !resolve && rect.height > 0;
+  if (whole_tile_store) {
+    const uint8_t* first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
+    const size_t pitch = rect.height > 1
+        ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
+    encode_pixel_rows(desc.surface->format(), memory.color_plane(attachment), memory.index(0, 1, 0),
+                      n, rect.height, desc.surface->pixel_bytes(rect.x0, rect.y0), pitch);
+    return;
+  }
   glm::vec4 row[kMaxRowValues];
   glm::vec4 resolved[kMaxRowValues];
   for (int ly = 0; ly < rect.height; ++ly) {
