@@ -116,13 +116,11 @@ int EncodeQuantized8Kernel(const float* rgba, size_t src_row_floats, int pixels,
 // RGB10A2's maximum codes and packing shifts, R G B A repeated for up to 16 lanes.
 alignas(64) constexpr float kRgb10a2MaxFloat[16] = {1023, 1023, 1023, 3, 1023, 1023, 1023, 3,
                                                     1023, 1023, 1023, 3, 1023, 1023, 1023, 3};
-alignas(64) constexpr int32_t kRgb10a2MaxCode[16] = {1023, 1023, 1023, 3, 1023, 1023, 1023, 3,
-                                                     1023, 1023, 1023, 3, 1023, 1023, 1023, 3};
 alignas(64) constexpr uint32_t kRgb10a2Shift[16] = {0, 10, 20, 30, 0, 10, 20, 30,
                                                     0, 10, 20, 30, 0, 10, 20, 30};
 
-// RGB10A2 rows, n pixels (four vectors) at a time: candidate round(v * max) clamped to the
-// codes, checked by unorm_to_float as one float division (the decode of DecodeRgb10a2Kernel,
+// RGB10A2 rows, n pixels (four vectors) at a time: candidate round(v * max) of v clamped to
+// [0, 1], checked by unorm_to_float as one float division (the decode of DecodeRgb10a2Kernel,
 // equal to the double path for every code), then each pixel's four shifted codes are ORed
 // together by two rounds of even/odd lane pairing, which leaves the words in pixel order.
 // Returns as EncodeQuantized8Kernel.
@@ -138,10 +136,13 @@ int EncodeQuantizedRgb10a2Kernel(const float* rgba, size_t src_row_floats, int p
   const size_t n = hn::Lanes(df);
   if (n < 4 || n > 16) return 0;
   const auto max_float = hn::LoadU(df, kRgb10a2MaxFloat);
-  const auto max_code = hn::LoadU(di, kRgb10a2MaxCode);
   const auto shift = hn::LoadU(du, kRgb10a2Shift);
   const auto candidate = [&](hn::Vec<decltype(df)> v, hn::Mask<decltype(df)>& ok) {
-    const auto code = hn::Min(hn::Max(hn::NearestInt(hn::Mul(v, max_float)), hn::Zero(di)), max_code);
+    // v * max clamped to [0, max] (NaN lanes may keep a NaN: their check fails whatever the
+    // code) and rounded by adding 2^23, whose sum's bits hold the integer.
+    const auto product = hn::Min(hn::Max(hn::Mul(v, max_float), hn::Zero(df)), max_float);
+    const auto code = hn::Sub(hn::BitCast(di, hn::Add(product, hn::Set(df, 8388608.0f))),
+                              hn::Set(di, 0x4B000000));
     ok = hn::And(ok, hn::Eq(hn::Div(hn::ConvertTo(df, code), max_float), v));
     return hn::Shl(hn::BitCast(du, code), shift);
   };

@@ -34,7 +34,10 @@ HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> unorm_code(DF df, hn::Vec<DF> v, hn::
   // The product clamped to [0, max] (0 for NaN) before rounding, so every lane converts a
   // value in range.
   const auto product = hn::IfThenElseZero(hn::Gt(v, hn::Zero(df)), hn::Min(hn::Mul(v, max), max));
-  const auto candidate = hn::NearestInt(product);
+  // Rounded to an integer by adding 2^23 (the sum's last mantissa bit weighs 1), read from the
+  // sum's bits: cheaper than a conversion with out-of-range fixups, which no lane needs here.
+  const auto candidate = hn::Sub(hn::BitCast(di, hn::Add(product, hn::Set(df, 8388608.0f))),
+                                 hn::Set(di, 0x4B000000));
   const auto below = hn::RebindMask(di, hn::Lt(v, hn::GatherIndex(df, at, candidate)));
   const auto above = hn::RebindMask(di, hn::Ge(v, hn::GatherIndex(df, at + 1, candidate)));
   // A true mask is -1 as a vector: adding it steps down, subtracting it steps up.
@@ -87,8 +90,8 @@ void QuantizeSrgb8AlphaKernel(float* r, float* g, float* b, float* a, int count)
   }
 }
 
-void QuantizeUnormRgbaKernel(float* r, float* g, float* b, float* a, int count, int rgb_bits,
-                             int alpha_bits) {
+void QuantizeUnormRgbaKernel(float* r, float* g, float* b, float* a, int count, int bits) {
+  const int rgb_bits = bits & 0xFF, alpha_bits = bits >> 8;
   const hn::ScalableTag<float> df;
   const size_t n = hn::Lanes(df);
   const float* rgb_at = unorm_thresholds(rgb_bits).at.data();
@@ -174,9 +177,8 @@ HWY_EXPORT(QuantizeUnormRgbaKernel);
 void quantize_srgb8_alpha_simd(float* r, float* g, float* b, float* a, int count) {
   HWY_DYNAMIC_DISPATCH(QuantizeSrgb8AlphaKernel)(r, g, b, a, count);
 }
-void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int rgb_bits,
-                              int alpha_bits) {
-  HWY_DYNAMIC_DISPATCH(QuantizeUnormRgbaKernel)(r, g, b, a, count, rgb_bits, alpha_bits);
+void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int bits) {
+  HWY_DYNAMIC_DISPATCH(QuantizeUnormRgbaKernel)(r, g, b, a, count, bits);
 }
 
 }  // namespace ontile

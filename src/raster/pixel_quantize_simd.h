@@ -31,8 +31,10 @@ const SrgbQuantizeTables& srgb_quantize_tables();
 
 // r, g, b through linear_to_srgb8 and back, a through 8-bit UNORM (alpha is linear).
 void quantize_srgb8_alpha_simd(float* r, float* g, float* b, float* a, int count);
-// r, g, b at `rgb_bits`, a at `alpha_bits` UNORM (8 and 8, or 10 and 2).
-void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int rgb_bits,
-                              int alpha_bits);
+// r, g, b at rgb_bits, a at alpha_bits UNORM, the two packed as rgb_bits | alpha_bits << 8
+// (six arguments: all in registers, so callers can tail-call it).
+constexpr int kUnormBits8_8 = 8 | 8 << 8;
+constexpr int kUnormBits10_2 = 10 | 2 << 8;
+void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int bits);
 
 }  // namespace ontile

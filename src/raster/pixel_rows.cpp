@@ -13,17 +13,13 @@
 
 namespace ontile {
 
-void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
+namespace {
+
+// The formats without a whole-batch kernel of their own, apart so that quantize_pixels, called
+// once per shaded batch and output, stays a branch and a tail call for the hot formats.
+[[gnu::noinline]] void quantize_other_pixels(PixelFormat format, float* r, float* g, float* b,
+                                             float* a, int count) {
   switch (format) {
-    case PixelFormat::RGBA8_SRGB:
-      quantize_srgb8_alpha_simd(r, g, b, a, count);  // alpha is always linear
-      return;
-    case PixelFormat::RGBA8_UNORM:
-      quantize_unorm_rgba_simd(r, g, b, a, count, 8, 8);
-      return;
-    case PixelFormat::RGB10A2_UNORM:
-      quantize_unorm_rgba_simd(r, g, b, a, count, 10, 2);
-      return;
     case PixelFormat::RGBA32_FLOAT:
       return;
     case PixelFormat::RGBA16_FLOAT:
@@ -41,6 +37,21 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
         b[i] = q.z;
         a[i] = q.w;
       }
+  }
+}
+
+}  // namespace
+
+void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
+  switch (format) {
+    case PixelFormat::RGBA8_SRGB:
+      return quantize_srgb8_alpha_simd(r, g, b, a, count);  // alpha is always linear
+    case PixelFormat::RGBA8_UNORM:
+      return quantize_unorm_rgba_simd(r, g, b, a, count, kUnormBits8_8);
+    case PixelFormat::RGB10A2_UNORM:
+      return quantize_unorm_rgba_simd(r, g, b, a, count, kUnormBits10_2);
+    default:
+      return quantize_other_pixels(format, r, g, b, a, count);
   }
 }
 
