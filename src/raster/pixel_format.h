@@ -2,6 +2,7 @@
 // following the Vulkan data-format conversion rules, so tile memory keeps real-hardware precision.
 #pragma once
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
@@ -51,6 +52,11 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
 // and 32-bit float formats.
 void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t* dst);
 void decode_pixels(PixelFormat format, const uint8_t* src, int count, glm::vec4* dst);
+// encode_pixels on `rows` rows of `count` pixels, src rows src_row_pixels apart and dst rows
+// dst_row_bytes apart (a tile of tile memory into a surface): one dispatch for the whole block
+// where the values are already quantised to the format (tile memory holds no other values).
+void encode_pixel_rows(PixelFormat format, const glm::vec4* src, size_t src_row_pixels, int count,
+                       int rows, uint8_t* dst, size_t dst_row_bytes);
 
 // --- Scalar conversions shared with textures and image IO -------------------------------------
 

@@ -354,18 +354,6 @@ hn::Vec<hn::RebindToSigned<DF>> srgb8_code(DF df, hn::Vec<DF> v, const Srgb8Tabl
   return hn::IfThenElse(saturated, hn::Set(di, 255), hn::IfThenElseZero(in_range_i, code));
 }
 
-void QuantizeSrgb8Kernel(float* values, int count) {
-  const hn::ScalableTag<float> df;
-  const size_t n = hn::Lanes(df);
-  const Srgb8Tables& t = srgb8_tables();
-  size_t i = 0;
-  for (; i + n <= static_cast<size_t>(count); i += n) {
-    const auto code = srgb8_code(df, hn::LoadU(df, values + i), t);
-    hn::StoreU(hn::GatherIndex(df, t.decode.data(), code), df, values + i);
-  }
-  for (; i < static_cast<size_t>(count); ++i) values[i] = t.decode[linear_to_srgb8(values[i])];
-}
-
 // RGBA8_SRGB pixels: R, G, B through linear_to_srgb8, alpha (always linear) through
 // float_to_unorm(a, 8), each on its own deinterleaved lanes.
 void EncodeSrgb8AlphaKernel(const float* rgba, int pixels, uint8_t* dst) {
@@ -412,7 +400,6 @@ namespace ontile {
 
 HWY_EXPORT(QuantizeUnormKernel);
 HWY_EXPORT(EncodeUnorm8Kernel);
-HWY_EXPORT(QuantizeSrgb8Kernel);
 HWY_EXPORT(EncodeSrgb8AlphaKernel);
 HWY_EXPORT(DecodeTable8Kernel);
 HWY_EXPORT(EncodeRgb10a2Kernel);
@@ -423,9 +410,6 @@ HWY_EXPORT(DecodeRgb10a2Kernel);
 
 void quantize_unorm_simd(float* values, int count, int bits) {
   HWY_DYNAMIC_DISPATCH(QuantizeUnormKernel)(values, count, bits);
-}
-void quantize_srgb8_simd(float* values, int count) {
-  HWY_DYNAMIC_DISPATCH(QuantizeSrgb8Kernel)(values, count);
 }
 void encode_unorm8_simd(const float* values, int count, uint8_t* dst) {
   HWY_DYNAMIC_DISPATCH(EncodeUnorm8Kernel)(values, count, dst);

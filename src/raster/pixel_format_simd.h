@@ -8,8 +8,6 @@ namespace ontile {
 
 // values[i] = unorm_to_float(float_to_unorm(values[i], bits), bits), bits in 1..24.
 void quantize_unorm_simd(float* values, int count, int bits);
-// values[i] = the decoded value of the sRGB code of values[i] (linear_to_srgb8, then decode).
-void quantize_srgb8_simd(float* values, int count);
 // dst[i] = float_to_unorm(values[i], 8).
 void encode_unorm8_simd(const float* values, int count, uint8_t* dst);
 // RGBA8_SRGB pixels (4 floats each): dst[4 p + c] = linear_to_srgb8 for R, G, B and

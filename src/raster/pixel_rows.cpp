@@ -1,38 +1,25 @@
 // Pixel conversions over runs of pixels (see pixel_format.h: quantize_pixels, encode_pixels,
-// decode_pixels): one format dispatch per run, every format on SIMD lanes (pixel_format_simd.h,
-// pixel_packed_simd.h).
+// decode_pixels, encode_pixel_rows): one format dispatch per run, every format on SIMD lanes
+// (pixel_format_simd.h, pixel_packed_simd.h, pixel_quantize_simd.h); blocks of RGBA8 and RGB10A2
+// rows take the already-quantised fast path (pixel_encode_quantized_simd.h) as far as it goes.
 #include <cstring>
 
+#include "raster/pixel_encode_quantized_simd.h"
 #include "raster/pixel_format.h"
 #include "raster/pixel_format_simd.h"
 #include "raster/pixel_packed_simd.h"
+#include "raster/pixel_quantize_simd.h"
 #include "raster/srgb8_tables.h"
 
 namespace ontile {
 
-void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
+namespace {
+
+// The formats without a whole-batch kernel of their own, apart so that quantize_pixels, called
+// once per shaded batch and output, stays a branch and a tail call for the hot formats.
+[[gnu::noinline]] void quantize_other_pixels(PixelFormat format, float* r, float* g, float* b,
+                                             float* a, int count) {
   switch (format) {
-    case PixelFormat::RGBA8_SRGB:
-      quantize_srgb8_simd(r, count);
-      quantize_srgb8_simd(g, count);
-      quantize_srgb8_simd(b, count);
-      quantize_unorm_simd(a, count, 8);  // alpha is always linear
-      return;
-    case PixelFormat::RGBA8_UNORM:
-      // Channel arrays one after another (a whole batch's output): one run of 4 * count values.
-      if (g == r + count && b == g + count && a == b + count) {
-        quantize_unorm_simd(r, 4 * count, 8);
-        return;
-      }
-      [[fallthrough]];
-    case PixelFormat::RGB10A2_UNORM: {
-      const int bits = format == PixelFormat::RGBA8_UNORM ? 8 : 10;
-      quantize_unorm_simd(r, count, bits);
-      quantize_unorm_simd(g, count, bits);
-      quantize_unorm_simd(b, count, bits);
-      quantize_unorm_simd(a, count, format == PixelFormat::RGBA8_UNORM ? 8 : 2);
-      return;
-    }
     case PixelFormat::RGBA32_FLOAT:
       return;
     case PixelFormat::RGBA16_FLOAT:
@@ -50,6 +37,21 @@ void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a,
         b[i] = q.z;
         a[i] = q.w;
       }
+  }
+}
+
+}  // namespace
+
+void quantize_pixels(PixelFormat format, float* r, float* g, float* b, float* a, int count) {
+  switch (format) {
+    case PixelFormat::RGBA8_SRGB:
+      return quantize_srgb8_alpha_simd(r, g, b, a, count);  // alpha is always linear
+    case PixelFormat::RGBA8_UNORM:
+      return quantize_unorm_rgba_simd(r, g, b, a, count, kUnormBits8_8);
+    case PixelFormat::RGB10A2_UNORM:
+      return quantize_unorm_rgba_simd(r, g, b, a, count, kUnormBits10_2);
+    default:
+      return quantize_other_pixels(format, r, g, b, a, count);
   }
 }
 
@@ -81,6 +83,28 @@ void encode_pixels(PixelFormat format, const glm::vec4* src, int count, uint8_t*
       const int bytes = bytes_per_pixel(format);
       for (int i = 0; i < count; ++i) encode_pixel(format, src[i], dst + bytes * i);
     }
+  }
+}
+
+void encode_pixel_rows(PixelFormat format, const glm::vec4* src, size_t src_row_pixels, int count,
+                       int rows, uint8_t* dst, size_t dst_row_bytes) {
+  const bool rgba8 = format == PixelFormat::RGBA8_UNORM || format == PixelFormat::RGBA8_SRGB;
+  const bool quantized_path = rgba8 || format == PixelFormat::RGB10A2_UNORM;
+  int y = 0;
+  while (y < rows) {
+    if (quantized_path) {
+      const float* values = &src[y * src_row_pixels].x;
+      uint8_t* out = dst + y * dst_row_bytes;
+      y += rgba8 ? encode_quantized_rgba8_rows_simd(values, 4 * src_row_pixels, count, rows - y,
+                                                    format == PixelFormat::RGBA8_SRGB, out,
+                                                    dst_row_bytes)
+                 : encode_quantized_rgb10a2_rows_simd(values, 4 * src_row_pixels, count, rows - y,
+                                                      out, dst_row_bytes);
+      if (y == rows) return;
+    }
+    // A row the quantised path stopped at (or every row of another format): the general path.
+    encode_pixels(format, src + y * src_row_pixels, count, dst + y * dst_row_bytes);
+    ++y;
   }
 }
 

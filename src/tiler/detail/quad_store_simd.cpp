@@ -1,4 +1,5 @@
-// SIMD quad write-back (see quad_store_simd.h), compiled per target by Highway's foreach_target.
+// SIMD quad write-back and plane fills (see quad_store_simd.h), compiled per target by
+// Highway's foreach_target.
 // Loads, shuffles and stores only, so every target writes the same bits.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tiler/detail/quad_store_simd.cpp"
@@ -43,6 +44,49 @@ void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_f
   }
 }
 
+// Whole vectors of the value repeated (a vec4 per 128-bit block), four per iteration; copies
+// only, so every target writes the same bits.
+void FillPlaneKernel(glm::vec4* plane, size_t count, glm::vec4 value) {
+  float* const floats = reinterpret_cast<float*>(plane);
+  const size_t total = 4 * count;
+  size_t i = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<float> d;
+  const size_t n = hn::Lanes(d);
+  if (n % 4 == 0) {
+    alignas(64) float repeated[64];
+    for (size_t k = 0; k < n && k < 64; ++k) repeated[k] = value[static_cast<int>(k % 4)];
+    if (n <= 64) {
+      const auto v = hn::Load(d, repeated);
+      for (; i + 4 * n <= total; i += 4 * n) {
+        hn::StoreU(v, d, floats + i);
+        hn::StoreU(v, d, floats + i + n);
+        hn::StoreU(v, d, floats + i + 2 * n);
+        hn::StoreU(v, d, floats + i + 3 * n);
+      }
+      for (; i + n <= total; i += n) hn::StoreU(v, d, floats + i);
+    }
+  }
+#endif
+  for (; i < total; ++i) floats[i] = value[static_cast<int>(i % 4)];
+}
+
+void FillDepthKernel(float* depth, size_t count, float value) {
+  size_t i = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<float> d;
+  const size_t n = hn::Lanes(d);
+  const auto v = hn::Set(d, value);
+  for (; i + 4 * n <= count; i += 4 * n) {
+    hn::StoreU(v, d, depth + i);
+    hn::StoreU(v, d, depth + i + n);
+    hn::StoreU(v, d, depth + i + 2 * n);
+    hn::StoreU(v, d, depth + i + 3 * n);
+  }
+#endif
+  for (; i < count; ++i) depth[i] = value;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile
 HWY_AFTER_NAMESPACE();
@@ -51,6 +95,15 @@ HWY_AFTER_NAMESPACE();
 namespace ontile {
 
 HWY_EXPORT(StoreFullQuadsKernel);
+HWY_EXPORT(FillPlaneKernel);
+HWY_EXPORT(FillDepthKernel);
+
+void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value) {
+  HWY_DYNAMIC_DISPATCH(FillPlaneKernel)(plane, count, value);
+}
+void fill_depth(float* depth, size_t count, float value) {
+  HWY_DYNAMIC_DISPATCH(FillDepthKernel)(depth, count, value);
+}
 
 void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
                       const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane) {

@@ -1,6 +1,8 @@
 // The write-back of whole shaded quads on SIMD lanes: a batch's structure-of-arrays outputs
-// interleaved into a tile plane of RGBA values, two pixels of a quad row per store.
+// interleaved into a tile plane of RGBA values, two pixels of a quad row per store; and the
+// fills of cleared tile planes.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -13,5 +15,9 @@ namespace ontile {
 // f. A copy: the plane receives exactly the output values.
 void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
                       const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane);
+
+// Clears as fills: plane[0 .. count) = value, and depth[0 .. count) = value.
+void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value);
+void fill_depth(float* depth, size_t count, float value);
 
 }  // namespace ontile

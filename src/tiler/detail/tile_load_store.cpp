@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "tiler/detail/quad_store_simd.h"
+
 namespace ontile {
 namespace {
 
@@ -44,16 +46,29 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
                            int samples, const TileMemory& memory, int attachment, bool store,
                            bool resolve) {
   const int n = rect.width * samples;
+  // Colour stores without a resolve: the whole tile in one call (rows of tile memory are
+  // memory.width() * samples values apart, the surface's rows its row pitch).
+  const bool whole_tile_store = store && !is_depth && !resolve && rect.height > 0;
+  if (whole_tile_store) {
+    const uint8_t* first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
+    const size_t pitch = rect.height > 1
+        ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
+    encode_pixel_rows(desc.surface->format(), memory.color_plane(attachment), memory.index(0, 1, 0),
+                      n, rect.height, desc.surface->pixel_bytes(rect.x0, rect.y0), pitch);
+    return;
+  }
+  if (is_depth && desc.format == PixelFormat::D32_FLOAT && store && !resolve) {
+    for (int ly = 0; ly < rect.height; ++ly) {  // the stored bytes are the float's
+      std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly),
+                  memory.depth_plane() + memory.index(0, ly, 0), sizeof(float) * static_cast<size_t>(n));
+    }
+    return;
+  }
   glm::vec4 row[kMaxRowValues];
   glm::vec4 resolved[kMaxRowValues];
   for (int ly = 0; ly < rect.height; ++ly) {
     const size_t first = memory.index(0, ly, 0);
     const glm::vec4* values = memory.color_plane(attachment) + first;
-    if (is_depth && desc.format == PixelFormat::D32_FLOAT && store && !resolve) {
-      std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly), memory.depth_plane() + first,
-                  sizeof(float) * static_cast<size_t>(n));  // the stored bytes are the float's
-      continue;
-    }
     if (is_depth) {
       for (int i = 0; i < n; ++i) row[i] = glm::vec4(memory.depth_plane()[first + i], 0.0f, 0.0f, 1.0f);
       values = row;
@@ -89,9 +104,9 @@ void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& mem
       const glm::vec4 v = quantize_pixel(desc.format, desc.clear_value);
       const size_t n = static_cast<size_t>(memory.width()) * memory.height() * samples;
       if (is_depth) {
-        std::fill_n(depth, n, v.x);
+        fill_depth(depth, n, v.x);
       } else {
-        std::fill_n(color, n, v);
+        fill_plane(color, n, v);
       }
       continue;
     }

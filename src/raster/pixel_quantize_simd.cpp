@@ -1,0 +1,185 @@
+// Batch quantisation kernels (see pixel_quantize_simd.h), compiled per target by Highway's
+// foreach_target. UNORM: a candidate code from the float product (within one of the exact code,
+// since the product's rounding error is below 2^-14), corrected exactly by two threshold
+// compares, then code / max as one IEEE float division (equal to unorm_to_float's double path
+// for every 2-, 8- and 10-bit code; PixelRows.* decodes every code). sRGB: the bucket table of
+// srgb8_tables.h and one threshold step. Table reads, compares, integer operations and IEEE
+// float multiply and divide only: every target gives the same bits.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/pixel_quantize_simd.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "raster/pixel_format.h"
+#include "raster/pixel_quantize_simd.h"
+#include "raster/srgb8_tables.h"
+#include "util/error.h"
+
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// The exact UNORM code of v (float_to_unorm): 0 for NaN and v <= 0, max for v >= 1.
+template <class DF>
+HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> unorm_code(DF df, hn::Vec<DF> v, hn::Vec<DF> max,
+                                                      const float* at) {
+  const hn::RebindToSigned<DF> di;
+  // The product clamped to [0, max] (0 for NaN) before rounding, so every lane converts a
+  // value in range.
+  const auto product = hn::IfThenElseZero(hn::Gt(v, hn::Zero(df)), hn::Min(hn::Mul(v, max), max));
+  // Rounded to an integer by adding 2^23 (the sum's last mantissa bit weighs 1), read from the
+  // sum's bits: cheaper than a conversion with out-of-range fixups, which no lane needs here.
+  const auto candidate = hn::Sub(hn::BitCast(di, hn::Add(product, hn::Set(df, 8388608.0f))),
+                                 hn::Set(di, 0x4B000000));
+  const auto below = hn::RebindMask(di, hn::Lt(v, hn::GatherIndex(df, at, candidate)));
+  const auto above = hn::RebindMask(di, hn::Ge(v, hn::GatherIndex(df, at + 1, candidate)));
+  // A true mask is -1 as a vector: adding it steps down, subtracting it steps up.
+  return hn::Sub(hn::Add(candidate, hn::VecFromMask(di, below)), hn::VecFromMask(di, above));
+}
+
+template <class DF>
+HWY_INLINE hn::Vec<DF> quantize_unorm(DF df, hn::Vec<DF> v, hn::Vec<DF> max, const float* at) {
+  return hn::Div(hn::ConvertTo(df, unorm_code(df, v, max, at)), max);
+}
+
+// linear_to_srgb8 then its decode: bucket start (buckets below 2^-13 clamp to the first, whose
+// start is 0 and whose values stay below thresholds[0]; values from 1 up to the extra bucket,
+// code 255), one step up the thresholds (srgb8_tables.h: buckets are narrower than the
+// spacing of thresholds), and 0 for NaN, zeros and negatives.
+template <class DF>
+HWY_INLINE hn::Vec<DF> quantize_srgb8(DF df, hn::Vec<DF> v, const SrgbQuantizeTables& t,
+                                      const float* decode) {
+  const hn::RebindToSigned<DF> di;
+  const hn::RebindToUnsigned<DF> du;
+  const auto offset = hn::BitCast(di, hn::Sub(hn::BitCast(du, v), hn::Set(du, kSrgb8BucketLowestBits)));
+  const auto bucket = hn::Min(hn::Max(hn::ShiftRight<23 - kSrgb8BucketMantissaBits>(offset), hn::Zero(di)),
+                              hn::Set(di, kSrgb8BucketCount));
+  auto code = hn::GatherIndex(di, t.bucket_start, bucket);
+  const auto above = hn::RebindMask(di, hn::Ge(v, hn::GatherIndex(df, t.thresholds, code)));
+  code = hn::Sub(code, hn::VecFromMask(di, above));
+  code = hn::IfThenElseZero(hn::RebindMask(di, hn::Gt(v, hn::Zero(df))), code);
+  return hn::GatherIndex(df, decode, code);
+}
+
+void QuantizeSrgb8AlphaKernel(float* r, float* g, float* b, float* a, int count) {
+  const hn::ScalableTag<float> df;
+  const size_t n = hn::Lanes(df);
+  const SrgbQuantizeTables& t = srgb_quantize_tables();
+  const float* decode = srgb8_tables().decode.data();
+  const float* at = unorm_thresholds(8).at.data();
+  const auto max = hn::Set(df, 255.0f);
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    hn::StoreU(quantize_srgb8(df, hn::LoadU(df, r + i), t, decode), df, r + i);
+    hn::StoreU(quantize_srgb8(df, hn::LoadU(df, g + i), t, decode), df, g + i);
+    hn::StoreU(quantize_srgb8(df, hn::LoadU(df, b + i), t, decode), df, b + i);
+    hn::StoreU(quantize_unorm(df, hn::LoadU(df, a + i), max, at), df, a + i);
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    r[i] = decode[linear_to_srgb8(r[i])];
+    g[i] = decode[linear_to_srgb8(g[i])];
+    b[i] = decode[linear_to_srgb8(b[i])];
+    a[i] = unorm_to_float(float_to_unorm(a[i], 8), 8);
+  }
+}
+
+void QuantizeUnormRgbaKernel(float* r, float* g, float* b, float* a, int count, int bits) {
+  const int rgb_bits = bits & 0xFF, alpha_bits = bits >> 8;
+  const hn::ScalableTag<float> df;
+  const size_t n = hn::Lanes(df);
+  const float* rgb_at = unorm_thresholds(rgb_bits).at.data();
+  const float* alpha_at = unorm_thresholds(alpha_bits).at.data();
+  const auto rgb_max = hn::Set(df, static_cast<float>((1u << rgb_bits) - 1));
+  const auto alpha_max = hn::Set(df, static_cast<float>((1u << alpha_bits) - 1));
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    hn::StoreU(quantize_unorm(df, hn::LoadU(df, r + i), rgb_max, rgb_at), df, r + i);
+    hn::StoreU(quantize_unorm(df, hn::LoadU(df, g + i), rgb_max, rgb_at), df, g + i);
+    hn::StoreU(quantize_unorm(df, hn::LoadU(df, b + i), rgb_max, rgb_at), df, b + i);
+    hn::StoreU(quantize_unorm(df, hn::LoadU(df, a + i), alpha_max, alpha_at), df, a + i);
+  }
+  for (; i < static_cast<size_t>(count); ++i) {
+    r[i] = unorm_to_float(float_to_unorm(r[i], rgb_bits), rgb_bits);
+    g[i] = unorm_to_float(float_to_unorm(g[i], rgb_bits), rgb_bits);
+    b[i] = unorm_to_float(float_to_unorm(b[i], rgb_bits), rgb_bits);
+    a[i] = unorm_to_float(float_to_unorm(a[i], alpha_bits), alpha_bits);
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ontile {
+
+UnormThresholds::UnormThresholds(int bits_) : bits(bits_) {
+  const uint32_t max_code = (1u << bits) - 1;
+  at.resize(max_code + 2);
+  at[0] = -std::numeric_limits<float>::infinity();
+  at[max_code + 1] = std::numeric_limits<float>::quiet_NaN();
+  // float_to_unorm is non-decreasing in the value, and on [0, 1] so are the float bits: binary
+  // search of the bits for the first value reaching each code.
+  for (uint32_t k = 1; k <= max_code; ++k) {
+    uint32_t lo = 0, hi = std::bit_cast<uint32_t>(1.0f);  // float_to_unorm(1) = max >= k
+    while (lo < hi) {
+      const uint32_t mid = lo + (hi - lo) / 2;
+      if (float_to_unorm(std::bit_cast<float>(mid), bits) >= k) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    at[k] = std::bit_cast<float>(lo);
+  }
+}
+
+const UnormThresholds& unorm_thresholds(int bits) {
+  static const UnormThresholds two(2), eight(8), ten(10);
+  switch (bits) {
+    case 2: return two;
+    case 8: return eight;
+    case 10: return ten;
+    default: throw Error("unorm_thresholds: no table for " + std::to_string(bits) + " bits");
+  }
+}
+
+SrgbQuantizeTables::SrgbQuantizeTables() {
+  const Srgb8Tables& t = srgb8_tables();
+  for (int bucket = 0; bucket < kSrgb8BucketCount; ++bucket) {
+    bucket_start[bucket] = t.bucket_start[bucket];
+    // One step must reach the code: at most one threshold inside each bucket.
+    const int next = bucket + 1 < kSrgb8BucketCount ? t.bucket_start[bucket + 1] : 255;
+    if (next - t.bucket_start[bucket] > 1) {
+      throw Error("srgb quantize tables: bucket " + std::to_string(bucket) + " holds two thresholds");
+    }
+  }
+  bucket_start[kSrgb8BucketCount] = 255;
+  for (int c = 0; c < 255; ++c) thresholds[c] = t.thresholds[c];
+  thresholds[255] = std::numeric_limits<float>::quiet_NaN();
+}
+
+const SrgbQuantizeTables& srgb_quantize_tables() {
+  static const SrgbQuantizeTables tables;
+  return tables;
+}
+
+HWY_EXPORT(QuantizeSrgb8AlphaKernel);
+HWY_EXPORT(QuantizeUnormRgbaKernel);
+
+void quantize_srgb8_alpha_simd(float* r, float* g, float* b, float* a, int count) {
+  HWY_DYNAMIC_DISPATCH(QuantizeSrgb8AlphaKernel)(r, g, b, a, count);
+}
+void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int bits) {
+  HWY_DYNAMIC_DISPATCH(QuantizeUnormRgbaKernel)(r, g, b, a, count, bits);
+}
+
+}  // namespace ontile
+#endif  // HWY_ONCE
