@@ -7,6 +7,9 @@ import unittest
 try:
     import ontile
     IMPORT_ERROR = None
+    # An empty build/python/ontile folder imports as a namespace package: not built either.
+    if not hasattr(ontile, "render"):
+        raise ImportError(f"{ontile.__path__} holds no built module")
 except ImportError as e:  # the extension was not built: every suite skips, saying why
     ontile = None
     IMPORT_ERROR = f"ontile module not importable ({e}); build it with -DONTILE_BUILD_PYTHON=ON"
