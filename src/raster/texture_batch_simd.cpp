@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstring>
 
+#include "raster/lane_bits.h"
 #include "raster/texel_trace.h"
 #include "raster/texture_batch_simd.h"
 
@@ -22,16 +23,11 @@ using VI = hn::Vec<DI>;
 
 // Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
 constexpr float kMaxExactTexelCoord = 16777216.0f;
-// Bit i for lane i (x86 float vectors hold at most 16 lanes).
-alignas(64) constexpr int32_t kLaneBit32[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
-                                                1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
-                                                1 << 12, 1 << 13, 1 << 14, 1 << 15};
-
 // Mask of the float lanes of fragments f.. whose bit is set in `bits`.
 HWY_INLINE hn::Mask<DF> float_lanes_of(DF df, uint64_t bits, size_t f) {
   const DI di;
   const VI word = hn::Set(di, static_cast<int32_t>((bits >> f) & 0xFFFFu));
-  return hn::RebindMask(df, hn::Ne(hn::And(word, hn::LoadU(di, kLaneBit32)), hn::Zero(di)));
+  return hn::RebindMask(df, hn::Ne(hn::And(word, hn::LoadU(di, kLaneBit)), hn::Zero(di)));
 }
 
 void NearestClampedTexelsKernel(const float* coord, int count, int size, int32_t* out) {

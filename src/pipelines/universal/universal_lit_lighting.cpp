@@ -14,6 +14,7 @@
 
 #include "pipelines/universal/universal_lit_functors.h"
 #include "pipelines/universal/universal_lit_lighting.h"
+#include "raster/lane_bits.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -24,10 +25,6 @@ using DF = hn::ScalableTag<float>;
 using DI = hn::RebindToSigned<DF>;
 using VF = hn::Vec<DF>;
 using MF = hn::Mask<DF>;
-
-alignas(64) constexpr int32_t kLaneBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
-                                              1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
-                                              1 << 12, 1 << 13, 1 << 14, 1 << 15};
 
 // The bits of a mask's lanes (lane i: bit i).
 HWY_INLINE uint32_t mask_bits(DF, MF m) {

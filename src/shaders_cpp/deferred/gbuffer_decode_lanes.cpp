@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include "shaders_cpp/deferred/gbuffer_decode_lanes.h"
+#include "raster/lane_bits.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -62,12 +63,9 @@ void DecodeGBufferKernel(const GBufferLayout& layout, const ViewReconstruction& 
   const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), two = hn::Set(df, 2.0f);
   const bool signed_normal = gbuffer_detail::is_float_format(layout.normal_format);
   const int normal_target = layout.has_specular ? 2 : 1;
-  alignas(64) static constexpr int32_t kBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
-                                                   1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
-                                                   1 << 12, 1 << 13, 1 << 14, 1 << 15};
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
     const auto bits = hn::Set(di, static_cast<int32_t>((in.lit >> f) & 0xFFFFu));
-    const auto lit = hn::RebindMask(df, hn::Ne(hn::And(bits, hn::LoadU(di, kBit)), hn::Zero(di)));
+    const auto lit = hn::RebindMask(df, hn::Ne(hn::And(bits, hn::LoadU(di, kLaneBit)), hn::Zero(di)));
     const auto t = [&](int target, int c) { return hn::Load(df, in.targets[target][c] + f); };
     VF diffuse[3], f0[3], roughness;
     if (layout.has_specular) {

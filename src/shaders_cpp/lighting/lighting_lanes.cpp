@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 
+#include "raster/lane_bits.h"
 #include "shaders_cpp/lighting/brdf.h"
 #include "shaders_cpp/lighting/punctual_light.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
@@ -25,11 +26,6 @@ using DF = hn::ScalableTag<float>;
 using DI = hn::RebindToSigned<DF>;
 using VF = hn::Vec<DF>;
 using MF = hn::Mask<DF>;
-
-// Bit i for lane i (x86 float vectors hold at most 16 lanes).
-alignas(64) constexpr int32_t kLaneBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
-                                              1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
-                                              1 << 12, 1 << 13, 1 << 14, 1 << 15};
 
 // Lanes i.. whose bit is set in `bits`.
 HWY_INLINE MF lanes_of(DF df, uint64_t bits, size_t i) {

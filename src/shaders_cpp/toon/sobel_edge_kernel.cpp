@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "raster/lane_bits.h"
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -26,10 +27,6 @@ using VI = hn::Vec<DI>;
 // Beyond 2^24 every float is an integer: where texture.cpp's texel_coord clamps (ClampToEdge).
 constexpr float kMaxExactTexelCoord = 16777216.0f;
 constexpr float kMinOneMinusDepth = 5.9604645e-8f;  // 2^-24, as linearize_depth
-// Bit i of a lane mask word for lane i (vectors have at most 16 float lanes here).
-alignas(64) constexpr int32_t kLaneBit[16] = {1 << 0, 1 << 1, 1 << 2,  1 << 3,  1 << 4,  1 << 5,
-                                              1 << 6, 1 << 7, 1 << 8,  1 << 9,  1 << 10, 1 << 11,
-                                              1 << 12, 1 << 13, 1 << 14, 1 << 15};
 
 // Mask of the lanes whose bit is set in bits (bit i = lane i).
 HWY_INLINE hn::Mask<DI> lanes_of(DI di, uint64_t bits) {
