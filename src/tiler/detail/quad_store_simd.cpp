@@ -44,6 +44,34 @@ void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_f
   }
 }
 
+void LoadFullQuadsKernel(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
+                         float* const channels[4]) {
+  const float* const floats = reinterpret_cast<const float*>(plane);
+  const size_t row_floats = 4 * static_cast<size_t>(row_pixels);
+  for (int q = 0; q < quad_count; ++q) {
+    const float* top = floats + 4 * static_cast<size_t>(pixel[q]);
+    const float* bottom = top + row_floats;
+    const size_t f = 4 * static_cast<size_t>(q);
+#if HWY_TARGET == HWY_SCALAR
+    for (int lane = 0; lane < 4; ++lane) {
+      const float* src = (lane < 2 ? top : bottom) + 4 * (lane & 1);
+      for (int c = 0; c < 4; ++c) channels[c][f + lane] = src[c];
+    }
+#else
+    // The inverse 4x4 transpose: four RGBA pixels into the quad's lanes of R, G, B, A.
+    const hn::Full128<float> d;
+    const auto p0 = hn::LoadU(d, top), p1 = hn::LoadU(d, top + 4);
+    const auto p2 = hn::LoadU(d, bottom), p3 = hn::LoadU(d, bottom + 4);
+    const auto xy_top = hn::InterleaveLower(d, p0, p1), xy_bottom = hn::InterleaveLower(d, p2, p3);
+    const auto zw_top = hn::InterleaveUpper(d, p0, p1), zw_bottom = hn::InterleaveUpper(d, p2, p3);
+    hn::StoreU(hn::ConcatLowerLower(d, xy_bottom, xy_top), d, channels[0] + f);
+    hn::StoreU(hn::ConcatUpperUpper(d, xy_bottom, xy_top), d, channels[1] + f);
+    hn::StoreU(hn::ConcatLowerLower(d, zw_bottom, zw_top), d, channels[2] + f);
+    hn::StoreU(hn::ConcatUpperUpper(d, zw_bottom, zw_top), d, channels[3] + f);
+#endif
+  }
+}
+
 // Whole vectors of the value repeated (a vec4 per 128-bit block), four per iteration; copies
 // only, so every target writes the same bits.
 void FillPlaneKernel(glm::vec4* plane, size_t count, glm::vec4 value) {
@@ -95,8 +123,14 @@ HWY_AFTER_NAMESPACE();
 namespace ontile {
 
 HWY_EXPORT(StoreFullQuadsKernel);
+HWY_EXPORT(LoadFullQuadsKernel);
 HWY_EXPORT(FillPlaneKernel);
 HWY_EXPORT(FillDepthKernel);
+
+void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
+                     float* const channels[4]) {
+  HWY_DYNAMIC_DISPATCH(LoadFullQuadsKernel)(plane, pixel, quad_count, row_pixels, channels);
+}
 
 void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value) {
   HWY_DYNAMIC_DISPATCH(FillPlaneKernel)(plane, count, value);

@@ -1,6 +1,6 @@
 // The write-back of whole shaded quads on SIMD lanes: a batch's structure-of-arrays outputs
-// interleaved into a tile plane of RGBA values, two pixels of a quad row per store; and the
-// fills of cleared tile planes.
+// interleaved into a tile plane of RGBA values, two pixels of a quad row per store; the inverse
+// read (framebuffer fetch of a batch); and the fills of cleared tile planes.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -15,6 +15,11 @@ namespace ontile {
 // f. A copy: the plane receives exactly the output values.
 void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
                       const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane);
+
+// The inverse: channels[c][4 i + lane] = channel c of plane pixel pixel[i] (+ 1, + row_pixels,
+// + row_pixels + 1 for lanes 1, 2, 3), for quads i < quad_count.
+void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
+                     float* const channels[4]);
 
 // Clears as fills: plane[0 .. count) = value, and depth[0 .. count) = value.
 void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value);

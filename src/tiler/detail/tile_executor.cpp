@@ -4,6 +4,7 @@
 // quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
 #include "tiler/detail/tile_executor.h"
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 
@@ -11,6 +12,7 @@
 #include "raster/texel_trace.h"
 #include "tiler/detail/hierarchical_depth.h"
 #include "tiler/detail/quad_batcher.h"
+#include "tiler/detail/quad_store_simd.h"
 #include "tiler/detail/tile_load_store.h"
 #include "util/error.h"
 
@@ -31,7 +33,8 @@ class TileFetch final : public FramebufferFetch {
     if (attachment == depth_index_) return {memory_.depth_plane()[i], 0.0f, 0.0f, 1.0f};
     return memory_.color_plane(attachment)[i];
   }
-  // The quads' two rows are adjacent pixels of tile memory: one index per quad.
+  // The quads' two rows are adjacent pixels of tile memory: one index per quad; single-sample
+  // colour planes through the SIMD transpose (quad_store_simd.h).
   void load_quads(int input_slot, const int32_t* quad_x_px, const int32_t* quad_y_px, int quad_count, int sample,
                   float* const channel[4]) const override {
     const int attachment = attachment_of(input_slot);
@@ -41,17 +44,23 @@ class TileFetch final : public FramebufferFetch {
       const float* depth = memory_.depth_plane();
       for (int q = 0; q < quad_count; ++q) {
         const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
-        for (int lane = 0; lane < kQuadLanes; ++lane) {
-          const int f = q * kQuadLanes + lane;
-          channel[0][f] = depth[i + offsets[lane]];
-          channel[1][f] = 0.0f;
-          channel[2][f] = 0.0f;
-          channel[3][f] = 1.0f;
-        }
+        for (int lane = 0; lane < kQuadLanes; ++lane) channel[0][q * kQuadLanes + lane] = depth[i + offsets[lane]];
       }
+      const int fragments = quad_count * kQuadLanes;
+      std::fill_n(channel[1], fragments, 0.0f);
+      std::fill_n(channel[2], fragments, 0.0f);
+      std::fill_n(channel[3], fragments, 1.0f);
       return;
     }
     const glm::vec4* colour = memory_.color_plane(attachment);
+    if (memory_.samples() == 1) {
+      uint32_t pixel[kBatchQuads];
+      for (int q = 0; q < quad_count; ++q) {
+        pixel[q] = static_cast<uint32_t>(memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, 0));
+      }
+      load_full_quads(colour, pixel, quad_count, memory_.width(), channel);
+      return;
+    }
     for (int q = 0; q < quad_count; ++q) {
       const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
       for (int lane = 0; lane < kQuadLanes; ++lane) {
