@@ -9,7 +9,6 @@
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
-#include "shaders_cpp/batch_helpers.h"
 
 namespace ontile {
 
@@ -93,14 +92,5 @@ inline glm::vec3 shade_ggx(const BrdfInputs& b, glm::vec3 n, glm::vec3 to_view, 
   const glm::vec3 specular = fresnel * (distribution * visibility * 3.14159265f);
   return radiance * n_dot_l * (b.diffuse_color + specular);
 }
-
-// shade_ggx for fragments [begin, end) with per-fragment light directions and radiances, written
-// into sum (accumulate = false) or added to it (sum += ..., accumulate = true) where reached[f]
-// is non-zero; other fragments keep sum. Bit for bit shade_ggx: the same operations in the same
-// order on SIMD lanes (lighting_lanes.cpp), its branches as selects (N.L <= 0 gives exactly 0,
-// which is still added), the Schlick power as schlick_power.h computes it.
-void shade_ggx(const BrdfBatch& b, const BatchVec3& n, const BatchVec3& to_view, const BatchVec3& to_light,
-               const BatchVec3& radiance, const int32_t* reached, int begin, int end, bool accumulate,
-               BatchVec3& sum);
 
 }  // namespace ontile

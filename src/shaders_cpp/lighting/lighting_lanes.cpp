@@ -1,8 +1,8 @@
-// The batched lighting of brdf.h, punctual_light.h and scene_lighting.h on SIMD lanes, compiled
-// per target by Highway's foreach_target: the per-fragment functions' IEEE multiply, add,
-// subtract, divide, square root and compares in their order (no FMA), so every target gives
-// their bits. direct_lighting runs as one kernel: each light's incidence, GGX and Schlick power
-// stay in registers instead of passing through arrays.
+// direct_lighting (scene_lighting.h) on SIMD lanes, compiled per target by Highway's
+// foreach_target: the per-fragment shade_ggx (brdf.h) and light_incidence (punctual_light.h)
+// with their IEEE multiply, add, subtract, divide, square root and compares in their order (no
+// FMA), so every target gives their bits; each light's incidence, GGX and Schlick power stay in
+// registers.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shaders_cpp/lighting/lighting_lanes.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -39,11 +39,6 @@ HWY_INLINE MF lanes_in(DF df, size_t i, int begin, int end) {
   const DI di;
   const auto index = hn::Add(hn::Iota(di, 0), hn::Set(di, static_cast<int32_t>(i)));
   return hn::RebindMask(df, hn::And(hn::Gt(index, hn::Set(di, begin - 1)), hn::Lt(index, hn::Set(di, end))));
-}
-
-HWY_INLINE MF nonzero(DF df, const int32_t* flags, size_t i) {
-  const DI di;
-  return hn::RebindMask(df, hn::Ne(hn::LoadU(di, flags + i), hn::Zero(di)));
 }
 
 // a < bound ? bound : a, as std::max(a, bound) (NaN a stays NaN).
@@ -195,47 +190,6 @@ HWY_INLINE MF incidence(DF df, const PunctualLight& light, const BatchVec3& surf
   return reaches;
 }
 
-void ShadeGgxKernel(const BrdfBatch& b, const BatchVec3& n, const BatchVec3& to_view, const BatchVec3& to_light,
-                    const BatchVec3& radiance, const int32_t* reached, int begin, int end, bool accumulate,
-                    BatchVec3& sum) {
-  const DF df;
-  const size_t lanes = hn::Lanes(df);
-  for (size_t i = static_cast<size_t>(begin) - static_cast<size_t>(begin) % lanes; i < static_cast<size_t>(end);
-       i += lanes) {
-    const MF write = hn::And(lanes_in(df, i, begin, end), nonzero(df, reached, i));
-    const SurfaceVec s = load_surface(df, n, to_view, i);
-    VF l[3], rad[3], term[3];
-    for (int c = 0; c < 3; ++c) {
-      l[c] = hn::Load(df, to_light[c] + i);
-      rad[c] = hn::Load(df, radiance[c] + i);
-    }
-    ggx_terms(df, b, s, l, rad, write, i, term);
-    for (int c = 0; c < 3; ++c) {
-      const VF old = hn::Load(df, sum[c] + i);
-      hn::Store(hn::IfThenElse(write, accumulate ? hn::Add(old, term[c]) : term[c], old), df, sum[c] + i);
-    }
-  }
-}
-
-void LightIncidenceKernel(const PunctualLight& light, const BatchVec3& surface, const int32_t* lit, int begin,
-                          int end, BatchVec3& to_light, BatchVec3& radiance, int32_t* reached) {
-  const DF df;
-  const DI di;
-  const size_t lanes = hn::Lanes(df);
-  for (size_t i = static_cast<size_t>(begin) - static_cast<size_t>(begin) % lanes; i < static_cast<size_t>(end);
-       i += lanes) {
-    const MF inside = lanes_in(df, i, begin, end);
-    VF l[3], rad[3];
-    const MF reaches = incidence(df, light, surface, i, nonzero(df, lit, i), l, rad);
-    for (int c = 0; c < 3; ++c) {
-      hn::Store(hn::IfThenElse(inside, l[c], hn::Load(df, to_light[c] + i)), df, to_light[c] + i);
-      hn::Store(hn::IfThenElse(inside, rad[c], hn::Load(df, radiance[c] + i)), df, radiance[c] + i);
-    }
-    const auto flags = hn::IfThenElseZero(hn::RebindMask(di, reaches), hn::Set(di, 1));
-    hn::StoreU(hn::IfThenElse(hn::RebindMask(di, inside), flags, hn::LoadU(di, reached + i)), di, reached + i);
-  }
-}
-
 // direct_lighting (scene_lighting.h) over fragments [0, count) whose cells are `cell`: the sun,
 // then per run of one cell its lights in order, each fragment's sum in the scalar order.
 void DirectLightingKernel(const SceneLighting& lighting, const BrdfBatch& b, const BatchVec3& n,
@@ -289,25 +243,10 @@ HWY_AFTER_NAMESPACE();
 namespace ontile {
 
 HWY_EXPORT(SchlickPowerKernel);
-HWY_EXPORT(ShadeGgxKernel);
-HWY_EXPORT(LightIncidenceKernel);
 HWY_EXPORT(DirectLightingKernel);
 
 void schlick_power_lanes(const float* x, int count, float* out) {
   HWY_DYNAMIC_DISPATCH(SchlickPowerKernel)(x, count, out);
-}
-
-void shade_ggx(const BrdfBatch& b, const BatchVec3& n, const BatchVec3& to_view, const BatchVec3& to_light,
-               const BatchVec3& radiance, const int32_t* reached, int begin, int end, bool accumulate,
-               BatchVec3& sum) {
-  if (begin >= end) return;
-  HWY_DYNAMIC_DISPATCH(ShadeGgxKernel)(b, n, to_view, to_light, radiance, reached, begin, end, accumulate, sum);
-}
-
-void light_incidence(const PunctualLight& light, const BatchVec3& surface, const int32_t* lit, int begin, int end,
-                     BatchVec3& to_light, BatchVec3& radiance, int32_t* reached) {
-  if (begin >= end) return;
-  HWY_DYNAMIC_DISPATCH(LightIncidenceKernel)(light, surface, lit, begin, end, to_light, radiance, reached);
 }
 
 void direct_lighting_lanes(const SceneLighting& lighting, const BrdfBatch& brdf, const BatchVec3& n,

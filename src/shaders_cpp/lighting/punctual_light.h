@@ -7,7 +7,6 @@
 
 #include <glm/glm.hpp>
 
-#include "shaders_cpp/batch_helpers.h"
 
 namespace ontile {
 
@@ -59,12 +58,5 @@ inline bool light_incidence(const PunctualLight& light, glm::vec3 surface, glm::
   radiance = light.intensity * falloff;
   return true;
 }
-
-// light_incidence for fragments [begin, end) at surface positions `surface`: reached[f] = lit[f]
-// and the light reaches the fragment, with to_light and radiance written where it does. Bit for
-// bit light_incidence (std::max and std::clamp as their comparisons, branches as selects), on
-// SIMD lanes (lighting_lanes.cpp).
-void light_incidence(const PunctualLight& light, const BatchVec3& surface, const int32_t* lit, int begin, int end,
-                     BatchVec3& to_light, BatchVec3& radiance, int32_t* reached);
 
 }  // namespace ontile
