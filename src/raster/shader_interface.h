@@ -105,6 +105,12 @@ struct FragmentBatch {
   int fragment_count() const { return quad_count * kQuadLanes; }
   int padded_fragment_count() const { return (fragment_count() + 15) & ~15; }
   bool active(int f) const { return (lane_mask[f >> 2] >> (f & 3)) & 1u; }
+  // Bit f set for every active fragment f (lane_mask of all quads).
+  uint64_t active_mask() const {
+    uint64_t mask = 0;
+    for (int q = 0; q < quad_count; ++q) mask |= uint64_t{lane_mask[q] & 0xFu} << (q * kQuadLanes);
+    return mask;
+  }
   int x_px(int f) const { return quad_x_px[f >> 2] + (f & 1); }
   int y_px(int f) const { return quad_y_px[f >> 2] + ((f >> 1) & 1); }
   // Framebuffer fetch at fragment f's own pixel (see QuadFragment::input).

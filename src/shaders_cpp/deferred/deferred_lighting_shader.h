@@ -71,6 +71,15 @@ class DeferredLightingShader final : public FragmentShader {
       ys[0] = ys[1] = y;
       ys[2] = ys[3] = y + 1;
     }
+    const uint64_t active = batch.active_mask();
+    // Active fragments in front of the far plane are lit, the others discarded (keeping the
+    // light target's clear colour).
+    const auto split_at_far_plane = [&](const float* depth) {
+      uint64_t near = 0;
+      for (int f = 0; f < count; ++f) near |= uint64_t{depth[f] < 1.0f} << f;
+      in.lit = active & near;
+      out.discard_mask |= active & ~near;
+    };
     if constexpr (Source::kLoadsWholeBatches) {
       alignas(64) float unused[kBatchFragments];
       float* const depth[4] = {in.depth, unused, unused, unused};
@@ -79,17 +88,10 @@ class DeferredLightingShader final : public FragmentShader {
         float* const target[4] = {in.targets[k][0], in.targets[k][1], in.targets[k][2], in.targets[k][3]};
         source_.load_all(1 + k, batch, target);
       }
-      uint64_t active = 0;
-      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
-      uint64_t near = 0;
-      for (int f = 0; f < count; ++f) near |= uint64_t{in.depth[f] < 1.0f} << f;
-      in.lit = active & near;
-      out.discard_mask |= active & ~near;
+      split_at_far_plane(in.depth);
     } else if (Texture2D::TexelView views[4]; source_.views(1 + layout_.target_count(), views)) {
       // texelFetch a batch at a time: depth of the active fragments, then the targets of those
       // in front of the far plane, traced as per-fragment fetches would be.
-      uint64_t active = 0;
-      for (int q = 0; q < batch.quad_count; ++q) active |= uint64_t{batch.lane_mask[q] & 0xFu} << (q * kQuadLanes);
       alignas(64) int32_t xs[kBatchFragments] = {}, ys[kBatchFragments] = {};
       for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
         const int f = std::countr_zero(rest);
@@ -99,17 +101,14 @@ class DeferredLightingShader final : public FragmentShader {
       const int padded = batch.padded_fragment_count();
       alignas(64) float depth[4][kBatchFragments];
       load_texels(views[0], xs, ys, padded, active, depth);
-      uint64_t near = 0;
-      for (int f = 0; f < count; ++f) near |= uint64_t{depth[0][f] < 1.0f} << f;
-      in.lit = active & near;
-      out.discard_mask |= active & ~near;
+      split_at_far_plane(depth[0]);
       for (int f = 0; f < count; ++f) in.depth[f] = depth[0][f];
       uint64_t fetched[4] = {active, in.lit, in.lit, in.lit};
       for (int k = 0; k < layout_.target_count(); ++k) load_texels(views[1 + k], xs, ys, padded, in.lit, in.targets[k]);
       trace_fetches(views, 1 + layout_.target_count(), xs, ys, count, fetched);
     } else {
       for (int f = 0; f < count; ++f) {
-        if (!batch.active(f)) continue;
+        if (!((active >> f) & 1u)) continue;
         const float depth = source_.load(0, batch, f).x;
         if (!(depth < 1.0f)) {
           out.discard(f);

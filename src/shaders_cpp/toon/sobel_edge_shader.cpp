@@ -279,13 +279,9 @@ glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
 void SobelEdgeShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
   // Fragments in batch order are quads in order, lanes in order: the trace order of shading
   // the quads one at a time.
-  uint64_t active = 0;
-  for (int q = 0; q < batch.quad_count; ++q) {
-    active |= uint64_t{batch.lane_mask[q]} << (q * kQuadLanes);
-  }
   shade_fragments(batch.varyings[FullScreenVertexShader::kUv],
                   batch.varyings[FullScreenVertexShader::kUv + 1], batch.padded_fragment_count(),
-                  active, out.color[0]);
+                  batch.active_mask(), out.color[0]);
 }
 
 }  // namespace ontile
