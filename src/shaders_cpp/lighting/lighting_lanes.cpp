@@ -46,8 +46,9 @@ HWY_INLINE VF at_least(VF a, VF bound) { return hn::IfThenElse(hn::Lt(a, bound),
 // bound < a ? bound : a, as std::min(a, bound) with the bound first (std::clamp's upper test).
 HWY_INLINE VF at_most(VF a, VF bound) { return hn::IfThenElse(hn::Lt(bound, a), bound, a); }
 
-// out[i] = schlick_power(x[i]) for i < count; std::pow only where schlick_power_is_exact fails
-// and the lane's bit is set in `wanted` (other lanes' results are never used).
+// out[i] = schlick_power(x[i]) for i < count (at most 64); std::pow only where
+// schlick_power_is_exact fails and the lane's bit is set in `wanted` (other lanes' results are
+// never used).
 void power_lanes(const float* x, int count, uint64_t wanted, float* out) {
   const hn::ScalableTag<double> dd;
   const hn::Rebind<float, decltype(dd)> dh;  // half-width floats, one per double lane
@@ -78,7 +79,9 @@ void power_lanes(const float* x, int count, uint64_t wanted, float* out) {
   for (; i < static_cast<size_t>(count); ++i) out[i] = schlick_power(x[i]);
 }
 
-void SchlickPowerKernel(const float* x, int count, float* out) { power_lanes(x, count, ~uint64_t{0}, out); }
+void SchlickPowerKernel(const float* x, int count, float* out) {
+  for (int i = 0; i < count; i += 64) power_lanes(x + i, count - i < 64 ? count - i : 64, ~uint64_t{0}, out + i);
+}
 
 // One vector of fragments' surface, as shade_ggx reads it.
 struct SurfaceVec {
