@@ -50,6 +50,26 @@ HWY_INLINE bool wrap_axis(DI di, hn::Vec<DI> first, hn::Vec<DI> last, WrapMode m
 }
 
 
+// What holds for a job's levels, found once for the jobs of a read that start at the same level
+// rather than per job; a job without them (`{}`) checks its own levels.
+struct LevelFacts {
+  bool sizes_fit = false;  // fewer than 2^31 texels (texel indices are int32 lanes)
+  bool plain = false;      // uncompressed 4-byte texels: texel t's granule is (address + 4 t) / 64
+  bool pow2_u = false, pow2_v = false;  // power-of-two widths, heights
+
+  static LevelFacts of(const Texture2D::Level* levels, int level_count) {
+    LevelFacts facts{true, true, true, true};
+    for (int l = 0; l < level_count; ++l) {
+      const Texture2D::Level& level = levels[l];
+      facts.sizes_fit &= static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height) < (uint64_t{1} << 31);
+      facts.plain &= level.memory_bytes_per_texel == 4 && level.block_bytes == 0;
+      facts.pow2_u &= (level.width & (level.width - 1)) == 0;
+      facts.pow2_v &= (level.height & (level.height - 1)) == 0;
+    }
+    return facts;
+  }
+};
+
 // Lanes i .. i + Lanes(d) of a (level, lane) vector holding `level0` in pairs 0-3 and `level1` in
 // pairs 4-7: one blend where a vector holds both levels (8 lanes), else a broadcast.
 template <class D, typename T>
@@ -75,15 +95,12 @@ HWY_INLINE size_t used_pairs(D d) {
 // |u| or |x| reach 2^24 (the scalar path reduces those first) or a level has 2^31 texels or more
 // (texel indices are int32 lanes).
 template <int kLevels>
-HWY_INLINE bool footprints(const QuadSample8& in, const float* u, const float* v, float a_out[kPairs],
-                           float b_out[kPairs], int32_t taps[4][kPairs]) {
+HWY_INLINE bool footprints(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
+                           float a_out[kPairs], float b_out[kPairs], int32_t taps[4][kPairs]) {
   const Texture2D::Level& level0 = *in.levels[0];
   const Texture2D::Level& level1 = *in.levels[kLevels - 1];  // level 0 again with one level
-  for (const Texture2D::Level* level : {&level0, &level1}) {
-    if (static_cast<uint64_t>(level->width) * static_cast<uint64_t>(level->height) >= (uint64_t{1} << 31)) {
-      return false;
-    }
-  }
+  if (!facts.sizes_fit && !LevelFacts::of(in.levels[0], 1).sizes_fit) return false;
+  if (!facts.sizes_fit && !LevelFacts::of(in.levels[kLevels - 1], 1).sizes_fit) return false;
   const hn::CappedTag<float, kPairs> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
@@ -94,8 +111,9 @@ HWY_INLINE bool footprints(const QuadSample8& in, const float* u, const float* v
   alignas(32) int32_t i0[kPairs], j0[kPairs];
   for (size_t i = 0; i < pairs; i += n) {
     const auto uu = hn::LoadU(d, u + i), vv = hn::LoadU(d, v + i);
-    const auto x = hn::Sub(hn::Mul(uu, per_level(d, i, static_cast<float>(w0), static_cast<float>(w1))), half);
-    const auto y = hn::Sub(hn::Mul(vv, per_level(d, i, static_cast<float>(h0), static_cast<float>(h1))), half);
+    // int -> float rounds to nearest, as static_cast<float> of the width does.
+    const auto x = hn::Sub(hn::Mul(uu, hn::ConvertTo(d, per_level(di, i, w0, w1))), half);
+    const auto y = hn::Sub(hn::Mul(vv, hn::ConvertTo(d, per_level(di, i, h0, h1))), half);
     const auto exact = hn::And(hn::And(hn::Lt(hn::Abs(uu), limit), hn::Lt(hn::Abs(x), limit)),
                                hn::And(hn::Lt(hn::Abs(vv), limit), hn::Lt(hn::Abs(y), limit)));
     if (!hn::AllTrue(d, exact)) return false;
@@ -105,12 +123,14 @@ HWY_INLINE bool footprints(const QuadSample8& in, const float* u, const float* v
     hn::Store(hn::Sub(x, x_floor), d, a_out + i);
     hn::Store(hn::Sub(y, y_floor), d, b_out + i);
   }
-  const bool pow2_u = ((w0 & (w0 - 1)) | (w1 & (w1 - 1))) == 0;
-  const bool pow2_v = ((h0 & (h0 - 1)) | (h1 & (h1 - 1))) == 0;
+  const bool pow2_u = facts.pow2_u || ((w0 & (w0 - 1)) | (w1 & (w1 - 1))) == 0;
+  const bool pow2_v = facts.pow2_v || ((h0 & (h0 - 1)) | (h1 & (h1 - 1))) == 0;
+  const auto one = hn::Set(di, 1);
   for (size_t i = 0; i < pairs; i += n) {
+    const auto row = per_level(di, i, w0, w1);
     hn::Vec<decltype(di)> xa, xb, ya, yb;
-    if (!wrap_axis(di, hn::Load(di, i0 + i), per_level(di, i, w0 - 1, w1 - 1), in.wrap_u, pow2_u, xa, xb) ||
-        !wrap_axis(di, hn::Load(di, j0 + i), per_level(di, i, h0 - 1, h1 - 1), in.wrap_v, pow2_v, ya, yb)) {
+    if (!wrap_axis(di, hn::Load(di, i0 + i), hn::Sub(row, one), in.wrap_u, pow2_u, xa, xb) ||
+        !wrap_axis(di, hn::Load(di, j0 + i), hn::Sub(per_level(di, i, h0, h1), one), in.wrap_v, pow2_v, ya, yb)) {
       for (size_t pair = 0; pair < pairs; ++pair) {
         const Texture2D::Level& level = pair < static_cast<size_t>(kLanes) ? level0 : level1;
         size_t t[4];
@@ -119,7 +139,6 @@ HWY_INLINE bool footprints(const QuadSample8& in, const float* u, const float* v
       }
       return true;
     }
-    const auto row = per_level(di, i, w0, w1);
     const auto row_a = hn::Mul(ya, row), row_b = hn::Mul(yb, row);
     hn::Store(hn::Add(row_a, xa), di, taps[0] + i);
     hn::Store(hn::Add(row_a, xb), di, taps[1] + i);
@@ -150,7 +169,7 @@ struct TraceStaging {
 // levels map each texel to its block's address. staging: where a batch call gathers them, or
 // null to append to in.trace.
 template <int kLevels>
-void record_trace(const QuadSample8& in, const int32_t taps[4][kPairs], TraceStaging* staging) {
+void record_trace(const QuadSample8& in, bool plain_levels, const int32_t taps[4][kPairs], TraceStaging* staging) {
   constexpr size_t kUsed = static_cast<size_t>(kLanes * kLevels);
   constexpr int kLastLevel = kLanes * (kLevels - 1);  // pair of the last level's lane 0
   alignas(32) uint64_t granule[4][kPairs];  // [tap][level * 4 + lane]
@@ -163,7 +182,7 @@ void record_trace(const QuadSample8& in, const int32_t taps[4][kPairs], TraceSta
   const auto plain = [](const Texture2D::Level& level) {
     return level.memory_bytes_per_texel == 4 && level.block_bytes == 0;
   };
-  if (plain(level0) && plain(level1)) {
+  if (plain_levels || (plain(level0) && plain(level1))) {
     for (size_t i = 0; i < kUsed; i += n) {
       const auto base = hn::Set(d64, i < static_cast<size_t>(kLanes) ? level0.address : level1.address);
       for (int t = 0; t < 4; ++t) {
@@ -274,12 +293,12 @@ void record_trace(const QuadSample8& in, const int32_t taps[4][kPairs], TraceSta
 // One quad with kLevels levels: result[c][lane]. False, touching nothing, when it needs the
 // general path. u, v: the 4 lanes' finite coordinates, twice (pairs; in.uv is not read).
 template <int kLevels>
-HWY_INLINE bool sample_one(const QuadSample8& in, const float* u, const float* v, float result[4][kLanes],
-                           TraceStaging* staging) {
+HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
+                           float result[4][kLanes], TraceStaging* staging) {
   alignas(32) float a[kPairs], b[kPairs];
   alignas(32) int32_t taps[4][kPairs];  // [tap][level * 4 + lane] texel index in the level
-  if (!footprints<kLevels>(in, u, v, a, b, taps)) return false;
-  if (in.trace) record_trace<kLevels>(in, taps, staging);
+  if (!footprints<kLevels>(in, facts, u, v, a, b, taps)) return false;
+  if (in.trace) record_trace<kLevels>(in, facts.plain, taps, staging);
   // Texels: one 32-bit RGBA8 load per tap and pair, laid out [tap][level * 4 + lane] so that both
   // levels' bilinear filters run on the same 8 lanes (two 4-lane vectors on targets with 128-bit
   // vectors); each channel is decoded through its table on the lanes at once. A lane's
@@ -353,10 +372,11 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const float* u, const float* v
   return true;
 }
 
-// sample_one for the job's level count.
-HWY_INLINE bool sample_job(const QuadSample8& in, const float* u, const float* v, float result[4][kLanes],
-                           TraceStaging* staging) {
-  return in.level_count == 2 ? sample_one<2>(in, u, v, result, staging) : sample_one<1>(in, u, v, result, staging);
+// sample_one for the job's level count. facts: of every level of the job's read, or `{}`.
+HWY_INLINE bool sample_job(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
+                           float result[4][kLanes], TraceStaging* staging) {
+  return in.level_count == 2 ? sample_one<2>(in, facts, u, v, result, staging)
+                             : sample_one<1>(in, facts, u, v, result, staging);
 }
 
 bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
@@ -366,7 +386,7 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
     v[lane] = in.uv[lane % kLanes].y;
   }
   alignas(16) float result[4][kLanes];
-  if (!sample_job(in, u, v, result, nullptr)) return false;
+  if (!sample_job(in, LevelFacts{}, u, v, result, nullptr)) return false;
   for (int lane = 0; lane < kLanes; ++lane) {
     out[lane] = {result[0][lane], result[1][lane], result[2][lane], result[3][lane]};
   }
@@ -379,8 +399,12 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
 int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
   const hn::CappedTag<float, kLanes> d;
   QuadSample8 jobs[QuadBatch8::kMaxReads];
+  // facts[r]: of read r's levels facts_level[r] and the one after it (when there is one).
+  LevelFacts facts[QuadBatch8::kMaxReads];
+  const Texture2D::Level* facts_level[QuadBatch8::kMaxReads];
   for (int r = 0; r < batch.read_count; ++r) {
     const BatchRead8& read = batch.reads[r];
+    facts_level[r] = nullptr;
     jobs[r].wrap_u = read.wrap_u;
     jobs[r].wrap_v = read.wrap_v;
     jobs[r].rgb_decode = read.rgb_decode;
@@ -446,8 +470,13 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
           job.blend = blend;
         }
       }
+      if (job.levels[0] != facts_level[r]) {
+        facts_level[r] = job.levels[0];
+        const int level = static_cast<int>(job.levels[0] - read.levels);
+        facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
+      }
       alignas(16) float result[4][kLanes];
-      if (!sample_job(job, u, v, result, &staging)) return finish(q * batch.read_count + r);
+      if (!sample_job(job, facts[r], u, v, result, &staging)) return finish(q * batch.read_count + r);
       for (int c = 0; c < 4; ++c) std::memcpy(read.out[c] + f0, result[c], sizeof result[c]);
     }
   }
