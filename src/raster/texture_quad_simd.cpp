@@ -169,7 +169,7 @@ struct TraceStaging {
 // levels map each texel to its block's address. staging: where a batch call gathers them, or
 // null to append to in.trace.
 template <int kLevels>
-void record_trace(const QuadSample8& in, bool plain_levels, const int32_t taps[4][kPairs], TraceStaging* staging) {
+HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int32_t taps[4][kPairs], TraceStaging* staging) {
   constexpr size_t kUsed = static_cast<size_t>(kLanes * kLevels);
   constexpr int kLastLevel = kLanes * (kLevels - 1);  // pair of the last level's lane 0
   alignas(32) uint64_t granule[4][kPairs];  // [tap][level * 4 + lane]
