@@ -235,8 +235,12 @@ HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int
     }
     regular &= hn::AllTrue(d64, same_rows);
   }
-  for (int lane = 1; lane < kLanes; ++lane) {
-    regular &= granule[0][lane] != granule[3][kLastLevel + lane - 1];
+  // Lane k's first granule against lane k - 1's last (lane 0's is `first` itself, kept above);
+  // lane 0's compare reads the slot before the last level's t11 row, defined here with one level.
+  if (kLevels == 1) granule[2][kPairs - 1] = 0;
+  for (size_t i = 0; i < static_cast<size_t>(kLanes); i += n) {
+    const auto after_lane_before = hn::Eq(hn::Load(d64, granule[0] + i), hn::LoadU(d64, granule[3] + kLastLevel + i - 1));
+    regular &= hn::AllFalse(d64, i == 0 ? hn::AndNot(hn::FirstN(d64, 1), after_lane_before) : after_lane_before);
   }
   if (regular) {
     // sequence[0] is written again with the first granule, the same value.
@@ -290,11 +294,11 @@ HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int
   *in.last_granule = last;
 }
 
-// One quad with kLevels levels: result[c][lane]. False, touching nothing, when it needs the
+// One quad with kLevels levels: channel c of lane i to out[c][i]. False, touching nothing, when it needs the
 // general path. u, v: the 4 lanes' finite coordinates, twice (pairs; in.uv is not read).
 template <int kLevels>
 HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
-                           float result[4][kLanes], TraceStaging* staging) {
+                           float* const out[4], TraceStaging* staging) {
   alignas(32) float a[kPairs], b[kPairs];
   alignas(32) int32_t taps[4][kPairs];  // [tap][level * 4 + lane] texel index in the level
   if (!footprints<kLevels>(in, facts, u, v, a, b, taps)) return false;
@@ -366,7 +370,7 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
         const auto w = hn::Set(d, in.blend);
         value = hn::Add(hn::Mul(value, hn::Sub(one, w)), hn::Mul(hn::Load(d, filtered[c] + kLanes + i), w));
       }
-      hn::StoreU(value, d, result[c] + i);
+      hn::StoreU(value, d, out[c] + i);
     }
   }
   return true;
@@ -374,9 +378,9 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
 
 // sample_one for the job's level count. facts: of every level of the job's read, or `{}`.
 HWY_INLINE bool sample_job(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
-                           float result[4][kLanes], TraceStaging* staging) {
-  return in.level_count == 2 ? sample_one<2>(in, facts, u, v, result, staging)
-                             : sample_one<1>(in, facts, u, v, result, staging);
+                           float* const out[4], TraceStaging* staging) {
+  return in.level_count == 2 ? sample_one<2>(in, facts, u, v, out, staging)
+                             : sample_one<1>(in, facts, u, v, out, staging);
 }
 
 bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
@@ -386,7 +390,8 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
     v[lane] = in.uv[lane % kLanes].y;
   }
   alignas(16) float result[4][kLanes];
-  if (!sample_job(in, LevelFacts{}, u, v, result, nullptr)) return false;
+  float* const result_rows[4] = {result[0], result[1], result[2], result[3]};
+  if (!sample_job(in, LevelFacts{}, u, v, result_rows, nullptr)) return false;
   for (int lane = 0; lane < kLanes; ++lane) {
     out[lane] = {result[0][lane], result[1][lane], result[2][lane], result[3][lane]};
   }
@@ -475,9 +480,8 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
         const int level = static_cast<int>(job.levels[0] - read.levels);
         facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
       }
-      alignas(16) float result[4][kLanes];
-      if (!sample_job(job, facts[r], u, v, result, &staging)) return finish(q * batch.read_count + r);
-      for (int c = 0; c < 4; ++c) std::memcpy(read.out[c] + f0, result[c], sizeof result[c]);
+      float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
+      if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
     }
   }
   return finish(batch.quad_count * batch.read_count);
