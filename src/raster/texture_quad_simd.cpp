@@ -294,6 +294,81 @@ HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int
   *in.last_granule = last;
 }
 
+// Channel c (the byte at kShift) of the pairs' texels p: decoded through `table` on lanes, then
+// filtered as texture.cpp does: top = t00 (1 - a) + t10 a, bottom = t01 (1 - a) + t11 a,
+// top (1 - b) + bottom b.
+template <int kShift, class D>
+HWY_INLINE hn::Vec<D> filter_channel(D d, const float* table, const hn::Vec<hn::RebindToUnsigned<D>> p[4],
+                                     hn::Vec<D> a, hn::Vec<D> one_a, hn::Vec<D> b, hn::Vec<D> one_b) {
+  const hn::RebindToUnsigned<D> du;
+  hn::Vec<D> tap[4];
+  for (int t = 0; t < 4; ++t) {
+    auto index = hn::ShiftRight<kShift>(p[t]);  // unsigned: the top byte needs no mask
+    if (kShift < 24) index = hn::And(index, hn::Set(du, 0xFFu));
+    tap[t] = hn::GatherIndex(d, table, hn::BitCast(hn::RebindToSigned<D>(), index));
+  }
+  const auto top = hn::Add(hn::Mul(tap[0], one_a), hn::Mul(tap[1], a));
+  const auto bottom = hn::Add(hn::Mul(tap[2], one_a), hn::Mul(tap[3], a));
+  return hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, b));
+}
+
+// The quad's 4 channels from its pairs' texels packed[t][pair] and weights a, b: filtered per
+// level, level 1 blended in with weight in.blend (two levels), channel c of lane i to out[c][i].
+// Where one vector holds every pair (8 lanes), a channel stays in registers from the decode to
+// the store, one channel at a time; elsewhere the filter runs on the pairs a vector at a time.
+template <int kLevels, class D>
+HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int32_t packed[4][kPairs],
+                            const float* a, const float* b, float* const out[4]) {
+  const hn::RebindToUnsigned<D> du8;
+  const auto one8 = hn::Set(d8, 1.0f);
+#if HWY_TARGET != HWY_SCALAR  // (which has no UpperHalf)
+  if constexpr (hn::MaxLanes(D()) >= static_cast<size_t>(kPairs)) {
+    hn::Vec<decltype(du8)> p[4];
+    for (int t = 0; t < 4; ++t) p[t] = hn::Load(du8, reinterpret_cast<const uint32_t*>(packed[t]));
+    const auto wa = hn::Load(d8, a), wb = hn::Load(d8, b);
+    const auto one_a = hn::Sub(one8, wa), one_b = hn::Sub(one8, wb);
+    const hn::Half<D> dh;
+    const auto w = hn::Set(dh, in.blend);
+    const auto one_w = hn::Sub(hn::Set(dh, 1.0f), w);
+    const auto store = [&](hn::Vec<D> filtered, float* row) {
+      auto value = hn::LowerHalf(dh, filtered);
+      if (kLevels == 2) value = hn::Add(hn::Mul(value, one_w), hn::Mul(hn::UpperHalf(dh, filtered), w));
+      hn::StoreU(value, dh, row);
+    };
+    store(filter_channel<0>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[0]);
+    store(filter_channel<8>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[1]);
+    store(filter_channel<16>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[2]);
+    store(filter_channel<24>(d8, in.alpha_decode, p, wa, one_a, wb, one_b), out[3]);
+    return;
+  }
+#endif
+  {
+    alignas(32) float filtered[4][kPairs];  // [channel][level * 4 + lane]
+    for (size_t i = 0; i < pairs; i += hn::Lanes(d8)) {
+      hn::Vec<decltype(du8)> p[4];
+      for (int t = 0; t < 4; ++t) p[t] = hn::Load(du8, reinterpret_cast<const uint32_t*>(packed[t]) + i);
+      const auto wa = hn::Load(d8, a + i), wb = hn::Load(d8, b + i);
+      const auto one_a = hn::Sub(one8, wa), one_b = hn::Sub(one8, wb);
+      hn::Store(filter_channel<0>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), d8, filtered[0] + i);
+      hn::Store(filter_channel<8>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), d8, filtered[1] + i);
+      hn::Store(filter_channel<16>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), d8, filtered[2] + i);
+      hn::Store(filter_channel<24>(d8, in.alpha_decode, p, wa, one_a, wb, one_b), d8, filtered[3] + i);
+    }
+    const hn::CappedTag<float, kLanes> d;
+    const auto one = hn::Set(d, 1.0f);
+    for (size_t i = 0; i < static_cast<size_t>(kLanes); i += hn::Lanes(d)) {
+      for (int c = 0; c < 4; ++c) {
+        auto value = hn::Load(d, filtered[c] + i);
+        if (kLevels == 2) {
+          const auto w = hn::Set(d, in.blend);
+          value = hn::Add(hn::Mul(value, hn::Sub(one, w)), hn::Mul(hn::Load(d, filtered[c] + kLanes + i), w));
+        }
+        hn::StoreU(value, d, out[c] + i);
+      }
+    }
+  }
+}
+
 // One quad with kLevels levels: channel c of lane i to out[c][i]. False, touching nothing, when it needs the
 // general path. u, v: the 4 lanes' finite coordinates, twice (pairs; in.uv is not read).
 template <int kLevels>
@@ -340,39 +415,7 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
       }
     }
   }
-  const auto byte_mask = hn::Set(di8, 0xFF);
-  const auto one8 = hn::Set(d8, 1.0f);
-  alignas(32) float filtered[4][kPairs];  // [channel][level * 4 + lane]
-  for (size_t i = 0; i < pairs; i += n8) {
-    hn::Vec<decltype(d8)> tap_value[4][4];  // [tap][channel]
-    for (int t = 0; t < 4; ++t) {
-      const auto p = hn::Load(di8, packed[t] + i);
-      tap_value[t][0] = hn::GatherIndex(d8, in.rgb_decode, hn::And(p, byte_mask));
-      tap_value[t][1] = hn::GatherIndex(d8, in.rgb_decode, hn::And(hn::ShiftRight<8>(p), byte_mask));
-      tap_value[t][2] = hn::GatherIndex(d8, in.rgb_decode, hn::And(hn::ShiftRight<16>(p), byte_mask));
-      tap_value[t][3] = hn::GatherIndex(d8, in.alpha_decode, hn::And(hn::ShiftRight<24>(p), byte_mask));
-    }
-    const auto wa = hn::Load(d8, a + i), wb = hn::Load(d8, b + i);
-    const auto one_a = hn::Sub(one8, wa), one_b = hn::Sub(one8, wb);
-    for (int c = 0; c < 4; ++c) {
-      const auto top = hn::Add(hn::Mul(tap_value[0][c], one_a), hn::Mul(tap_value[1][c], wa));
-      const auto bottom = hn::Add(hn::Mul(tap_value[2][c], one_a), hn::Mul(tap_value[3][c], wa));
-      hn::Store(hn::Add(hn::Mul(top, one_b), hn::Mul(bottom, wb)), d8, filtered[c] + i);
-    }
-  }
-  const hn::CappedTag<float, kLanes> d;
-  const size_t n = hn::Lanes(d);
-  const auto one = hn::Set(d, 1.0f);
-  for (size_t i = 0; i < static_cast<size_t>(kLanes); i += n) {
-    for (int c = 0; c < 4; ++c) {
-      auto value = hn::Load(d, filtered[c] + i);
-      if (kLevels == 2) {
-        const auto w = hn::Set(d, in.blend);
-        value = hn::Add(hn::Mul(value, hn::Sub(one, w)), hn::Mul(hn::Load(d, filtered[c] + kLanes + i), w));
-      }
-      hn::StoreU(value, d, out[c] + i);
-    }
-  }
+  filter_quad<kLevels>(d8, in, pairs, packed, a, b, out);
   return true;
 }
 
@@ -430,58 +473,92 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
   };
   const int first_quad = first / batch.read_count;
   int first_read = first - first_quad * batch.read_count;
-  for (int q = first_quad; q < batch.quad_count; ++q, first_read = 0) {
-    const int f0 = q * kLanes;
-    // finite_or_zero on lanes: |x| < inf is false for NaN and infinities.
-    // u, v: the 4 lanes' coordinates twice (pairs), as sample_one takes them.
-    alignas(32) float u[kPairs], v[kPairs];
-    const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
-    for (size_t i = 0; i < kLanes; i += hn::Lanes(d)) {
-      const auto raw_u = hn::LoadU(d, batch.u + f0 + i), raw_v = hn::LoadU(d, batch.v + f0 + i);
-      const auto finite_u = hn::IfThenElseZero(hn::Lt(hn::Abs(raw_u), inf), raw_u);
-      const auto finite_v = hn::IfThenElseZero(hn::Lt(hn::Abs(raw_v), inf), raw_v);
-      hn::Store(finite_u, d, u + i);
-      hn::Store(finite_u, d, u + kLanes + i);
-      hn::Store(finite_v, d, v + i);
-      hn::Store(finite_v, d, v + kLanes + i);
+  const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
+  // Quads a block of 4 at a time: the block's coordinates made finite (finite_or_zero on lanes:
+  // |x| < inf is false for NaN and infinities), then quad_lambda's rho = max(|d(uv)/dx|,
+  // |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7) for each read, one quad per lane: the
+  // scalar operations on lanes, std::max as a compare and select.
+  constexpr int kBlockQuads = kLanes;
+  for (int block = first_quad; block < batch.quad_count; block += kBlockQuads) {
+    const int quads = std::min(kBlockQuads, batch.quad_count - block);
+    alignas(32) float block_u[kBlockQuads * kLanes], block_v[kBlockQuads * kLanes];  // [quad][lane]
+    const float* raw_u = batch.u + block * kLanes;
+    const float* raw_v = batch.v + block * kLanes;
+    if (quads < kBlockQuads) {  // the last block: zeros after the batch's quads
+      std::memset(block_u, 0, sizeof block_u);
+      std::memset(block_v, 0, sizeof block_v);
+      std::memcpy(block_u, raw_u, sizeof(float) * static_cast<size_t>(quads * kLanes));
+      std::memcpy(block_v, raw_v, sizeof(float) * static_cast<size_t>(quads * kLanes));
+      raw_u = block_u;
+      raw_v = block_v;
     }
-    for (int r = first_read; r < batch.read_count; ++r) {
-      const BatchRead8& read = batch.reads[r];
-      QuadSample8& job = jobs[r];
-      // quad_lambda: rho = max(|d(uv)/dx|, |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7).
-      const float width = static_cast<float>(read.levels[0].width);
-      const float height = static_cast<float>(read.levels[0].height);
-      const float dx_u = (u[1] - u[0]) * width, dx_v = (v[1] - v[0]) * height;
-      const float dy_u = (u[2] - u[0]) * width, dy_v = (v[2] - v[0]) * height;
-      const float rho = std::max(std::sqrt(dx_u * dx_u + dx_v * dx_v), std::sqrt(dy_u * dy_u + dy_v * dy_v));
-      float lambda = std::log2(rho) + read.lod_bias;
-      // linear8_job's level selection.
-      job.level_count = 1;
-      job.blend = 0.0f;
-      const bool base_only = !(lambda > 0.0f) || read.mipmap_mode == MipmapMode::None;
-      if (!base_only) lambda = std::min(lambda, read.max_level);
-      if (base_only) {
-        job.levels[0] = &read.levels[0];
-      } else if (read.mipmap_mode == MipmapMode::Nearest) {
-        const int single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
-        job.levels[0] = &read.levels[single_level];
-      } else {
-        const float d1_float = std::floor(lambda);
-        const float blend = lambda - d1_float;
-        job.levels[0] = &read.levels[static_cast<int>(d1_float)];
-        if (blend != 0.0f) {
-          job.levels[1] = &read.levels[static_cast<int>(d1_float) + 1];
-          job.level_count = 2;
-          job.blend = blend;
+    for (size_t i = 0; i < static_cast<size_t>(kBlockQuads * kLanes); i += hn::Lanes(d)) {
+      const auto uu = hn::LoadU(d, raw_u + i), vv = hn::LoadU(d, raw_v + i);
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(uu), inf), uu), d, block_u + i);
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(vv), inf), vv), d, block_v + i);
+    }
+    alignas(16) float rho[QuadBatch8::kMaxReads][kBlockQuads];  // [read][quad of the block]
+    for (size_t i = 0; i < static_cast<size_t>(kBlockQuads); i += hn::Lanes(d)) {
+      hn::Vec<decltype(d)> u0, u1, u2, u3, v0, v1, v2, v3;
+      hn::LoadInterleaved4(d, block_u + i * kLanes, u0, u1, u2, u3);
+      hn::LoadInterleaved4(d, block_v + i * kLanes, v0, v1, v2, v3);
+      const auto du_dx = hn::Sub(u1, u0), dv_dx = hn::Sub(v1, v0);
+      const auto du_dy = hn::Sub(u2, u0), dv_dy = hn::Sub(v2, v0);
+      for (int r = 0; r < batch.read_count; ++r) {
+        const auto width = hn::Set(d, static_cast<float>(batch.reads[r].levels[0].width));
+        const auto height = hn::Set(d, static_cast<float>(batch.reads[r].levels[0].height));
+        const auto dx_u = hn::Mul(du_dx, width), dx_v = hn::Mul(dv_dx, height);
+        const auto dy_u = hn::Mul(du_dy, width), dy_v = hn::Mul(dv_dy, height);
+        const auto rho_x = hn::Sqrt(hn::Add(hn::Mul(dx_u, dx_u), hn::Mul(dx_v, dx_v)));
+        const auto rho_y = hn::Sqrt(hn::Add(hn::Mul(dy_u, dy_u), hn::Mul(dy_v, dy_v)));
+        hn::Store(hn::IfThenElse(hn::Lt(rho_x, rho_y), rho_y, rho_x), d, rho[r] + i);
+      }
+    }
+    for (int j = 0; j < quads; ++j, first_read = 0) {
+      const int q = block + j;
+      const int f0 = q * kLanes;
+      // u, v: the 4 lanes' coordinates twice (pairs), as sample_one takes them.
+      alignas(32) float u[kPairs], v[kPairs];
+      for (size_t i = 0; i < kLanes; i += hn::Lanes(d)) {
+        const auto finite_u = hn::Load(d, block_u + j * kLanes + i);
+        const auto finite_v = hn::Load(d, block_v + j * kLanes + i);
+        hn::Store(finite_u, d, u + i);
+        hn::Store(finite_u, d, u + kLanes + i);
+        hn::Store(finite_v, d, v + i);
+        hn::Store(finite_v, d, v + kLanes + i);
+      }
+      for (int r = first_read; r < batch.read_count; ++r) {
+        const BatchRead8& read = batch.reads[r];
+        QuadSample8& job = jobs[r];
+        float lambda = std::log2(rho[r][j]) + read.lod_bias;
+        // linear8_job's level selection.
+        job.level_count = 1;
+        job.blend = 0.0f;
+        const bool base_only = !(lambda > 0.0f) || read.mipmap_mode == MipmapMode::None;
+        if (!base_only) lambda = std::min(lambda, read.max_level);
+        if (base_only) {
+          job.levels[0] = &read.levels[0];
+        } else if (read.mipmap_mode == MipmapMode::Nearest) {
+          const int single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+          job.levels[0] = &read.levels[single_level];
+        } else {
+          const float d1_float = std::floor(lambda);
+          const float blend = lambda - d1_float;
+          job.levels[0] = &read.levels[static_cast<int>(d1_float)];
+          if (blend != 0.0f) {
+            job.levels[1] = &read.levels[static_cast<int>(d1_float) + 1];
+            job.level_count = 2;
+            job.blend = blend;
+          }
         }
+        if (job.levels[0] != facts_level[r]) {
+          facts_level[r] = job.levels[0];
+          const int level = static_cast<int>(job.levels[0] - read.levels);
+          facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
+        }
+        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
+        if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
-      if (job.levels[0] != facts_level[r]) {
-        facts_level[r] = job.levels[0];
-        const int level = static_cast<int>(job.levels[0] - read.levels);
-        facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
-      }
-      float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
-      if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
     }
   }
   return finish(batch.quad_count * batch.read_count);
