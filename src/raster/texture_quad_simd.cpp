@@ -28,8 +28,8 @@ constexpr float kMaxExactTexelCoord = 16777216.0f;  // as texture.cpp
 // clamp-to-edge. False when a lane needs another wrap (mirrored repeat, or repeat on another
 // size, outside the level): the caller takes the scalar path.
 template <class DI>
-HWY_INLINE bool wrap_axis(DI di, hn::Vec<DI> first, hn::Vec<DI> last, WrapMode mode, bool pow2, hn::Vec<DI>& lo,
-                          hn::Vec<DI>& hi) {
+HWY_INLINE bool wrap_axis(DI di, hn::Vec<DI> first, hn::Vec<DI> last, WrapMode mode, bool pow2,
+                          hn::Vec<DI>& lo, hn::Vec<DI>& hi) {
   const auto second = hn::Add(first, hn::Set(di, 1));
   if (mode == WrapMode::Repeat && pow2) {
     lo = hn::And(first, last);  // two's complement: i mod 2^k for negative i too
@@ -61,7 +61,8 @@ struct LevelFacts {
     LevelFacts facts{true, true, true, true};
     for (int l = 0; l < level_count; ++l) {
       const Texture2D::Level& level = levels[l];
-      facts.sizes_fit &= static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height) < (uint64_t{1} << 31);
+      const uint64_t texels = static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height);
+      facts.sizes_fit &= texels < (uint64_t{1} << 31);
       facts.plain &= level.memory_bytes_per_texel == 4 && level.block_bytes == 0;
       facts.pow2_u &= (level.width & (level.width - 1)) == 0;
       facts.pow2_v &= (level.height & (level.height - 1)) == 0;
@@ -129,8 +130,9 @@ HWY_INLINE bool footprints(const QuadSample8& in, const LevelFacts& facts, const
   for (size_t i = 0; i < pairs; i += n) {
     const auto row = per_level(di, i, w0, w1);
     hn::Vec<decltype(di)> xa, xb, ya, yb;
+    const auto last_row = hn::Sub(per_level(di, i, h0, h1), one);
     if (!wrap_axis(di, hn::Load(di, i0 + i), hn::Sub(row, one), in.wrap_u, pow2_u, xa, xb) ||
-        !wrap_axis(di, hn::Load(di, j0 + i), hn::Sub(per_level(di, i, h0, h1), one), in.wrap_v, pow2_v, ya, yb)) {
+        !wrap_axis(di, hn::Load(di, j0 + i), last_row, in.wrap_v, pow2_v, ya, yb)) {
       for (size_t pair = 0; pair < pairs; ++pair) {
         const Texture2D::Level& level = pair < static_cast<size_t>(kLanes) ? level0 : level1;
         size_t t[4];
@@ -169,7 +171,8 @@ struct TraceStaging {
 // levels map each texel to its block's address. staging: where a batch call gathers them, or
 // null to append to in.trace.
 template <int kLevels>
-HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int32_t taps[4][kPairs], TraceStaging* staging) {
+HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int32_t taps[4][kPairs],
+                             TraceStaging* staging) {
   constexpr size_t kUsed = static_cast<size_t>(kLanes * kLevels);
   constexpr int kLastLevel = kLanes * (kLevels - 1);  // pair of the last level's lane 0
   alignas(32) uint64_t granule[4][kPairs];  // [tap][level * 4 + lane]
@@ -239,16 +242,17 @@ HWY_INLINE void record_trace(const QuadSample8& in, bool plain_levels, const int
   // lane 0's compare reads the slot before the last level's t11 row, defined here with one level.
   if (kLevels == 1) granule[2][kPairs - 1] = 0;
   for (size_t i = 0; i < static_cast<size_t>(kLanes); i += n) {
-    const auto after_lane_before = hn::Eq(hn::Load(d64, granule[0] + i), hn::LoadU(d64, granule[3] + kLastLevel + i - 1));
-    regular &= hn::AllFalse(d64, i == 0 ? hn::AndNot(hn::FirstN(d64, 1), after_lane_before) : after_lane_before);
+    const auto lane_before_last = hn::LoadU(d64, granule[3] + kLastLevel + i - 1);
+    const auto merges = hn::Eq(hn::Load(d64, granule[0] + i), lane_before_last);
+    regular &= hn::AllFalse(d64, i == 0 ? hn::AndNot(hn::FirstN(d64, 1), merges) : merges);
   }
   if (regular) {
     // sequence[0] is written again with the first granule, the same value.
     for (size_t i = 0; i < static_cast<size_t>(kLanes); i += n) {
       const auto t00 = hn::Load(d64, granule[0] + i), t01 = hn::Load(d64, granule[2] + i);
       if (kLevels == 2) {
-        hn::StoreInterleaved4(t00, t01, hn::Load(d64, granule[0] + kLanes + i), hn::Load(d64, granule[2] + kLanes + i),
-                              d64, sequence + 4 * i);
+        const auto s00 = hn::Load(d64, granule[0] + kLanes + i), s01 = hn::Load(d64, granule[2] + kLanes + i);
+        hn::StoreInterleaved4(t00, t01, s00, s01, d64, sequence + 4 * i);
       } else {
         hn::StoreInterleaved2(t00, t01, d64, sequence + 2 * i);
       }
@@ -401,7 +405,8 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
     } else {
       const hn::CappedTag<int32_t, kLanes> di4;
       for (size_t i = 0; i < static_cast<size_t>(kPairs); i += hn::Lanes(di4)) {
-        const int32_t* words = reinterpret_cast<const int32_t*>(i < static_cast<size_t>(kLanes) ? texels0 : texels1);
+        const uint8_t* texels = i < static_cast<size_t>(kLanes) ? texels0 : texels1;
+        const int32_t* words = reinterpret_cast<const int32_t*>(texels);
         for (int t = 0; t < 4; ++t) {
           hn::Store(hn::GatherIndex(di4, words, hn::Load(di4, taps[t] + i)), di4, packed[t] + i);
         }
