@@ -1,5 +1,5 @@
 // SIMD quad sampler (see texture_quad_simd.h), compiled per target by Highway's foreach_target.
-// Only IEEE multiply, add, subtract and floor: every target gives the bits of the scalar path.
+// Only IEEE multiply, add, subtract, square root and floor: every target gives the bits of the scalar path.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/texture_quad_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
