@@ -1,5 +1,6 @@
 // SIMD quad sampler (see texture_quad_simd.h), compiled per target by Highway's foreach_target.
-// Only IEEE multiply, add, subtract, square root and floor: every target gives the bits of the scalar path.
+// Only IEEE multiply, add, subtract, square root and floor: every target gives the bits of the
+// scalar path.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/texture_quad_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -149,6 +150,7 @@ HWY_INLINE bool footprints(const QuadSample8& in, const LevelFacts& facts, const
   }
   return true;
 }
+
 // Granules a batch call gathers before appending them to the trace at once (a vector insert per
 // quad cost about 70 instructions): granules[1 .. count] in trace order, `last` the trace's last
 // granule with them appended. granules[0] is a spare slot record_trace may write.
@@ -373,8 +375,9 @@ HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int
   }
 }
 
-// One quad with kLevels levels: channel c of lane i to out[c][i]. False, touching nothing, when it needs the
-// general path. u, v: the 4 lanes' finite coordinates, twice (pairs; in.uv is not read).
+// One quad with kLevels levels: channel c of lane i to out[c][i]. False, touching nothing, when
+// it needs the general path. u, v: the 4 lanes' finite coordinates, twice (pairs; in.uv is not
+// read).
 template <int kLevels>
 HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const float* u, const float* v,
                            float* const out[4], TraceStaging* staging) {
