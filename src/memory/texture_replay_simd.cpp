@@ -1,6 +1,7 @@
 // replay_granules (texture_replay_kernel.h), compiled per target by Highway's foreach_target.
 // Vectors of granules whose lines are all the most recent way of their sets are runs of hits that
-// change no state, so they are counted at once; at the first lane that is not, that one granule
+// change no state, so they are counted at once; from the first lane that is not, the vector's
+// lanes are taken one by one while they hit way 0 or way 1 (a swap); the first that hits neither
 // takes the per-access path (its older ways searched and shifted on SIMD lanes) and the vectors
 // resume after it. Integer operations only: every target gives the counts of the per-access loop.
 #undef HWY_TARGET_INCLUDE
@@ -62,31 +63,12 @@ HWY_INLINE void ShiftUpOne(uint64_t* row, size_t count) {
   hn::StoreU(first, d, row + 1);
 }
 
-// One granule the long way, in stream order: its region's offset (resolved if new), then the full
-// LRU access (set_associative_cache.h: a hit at position p moves ways 0..p-1 back by one, a miss
-// all of them, the last dropping out); a miss is counted against its region.
-// kPlain: power-of-two sets, line_shift and index_shift 0; kOlderWays: ways - 1 when known at
-// compile time (the default 16-way cache), else 0.
-template <bool kPlain, size_t kOlderWays>
-HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t granule) {
-  const uint64_t id = granule >> kRegionShift;
-  uint64_t line = granule + regions.offset(id);
-  uint32_t set;
-  if constexpr (kPlain) {
-    set = static_cast<uint32_t>(line & (sets.sets - 1));
-  } else {
-    line >>= sets.line_shift;
-    set = sets.index_of_line(line);
-  }
-  uint64_t* const recent = sets.tags + set;
-  if (*recent == line) return true;
-  const size_t older_ways = kOlderWays != 0 ? kOlderWays : sets.ways - 1;
-  uint64_t* const row = sets.tags + sets.sets + static_cast<size_t>(set) * older_ways;  // older_of
-  if (older_ways > 0 && row[0] == line) {  // way 1: the two swap (the stream alternates often)
-    row[0] = *recent;
-    *recent = line;
-    return true;
-  }
+// The LRU access of `line` in a set whose two most recent ways (`recent`, then row[0]) do not
+// hold it: a hit at position p of the older ways moves ways 0..p-1 back by one, a miss all of
+// them, the last dropping out (set_associative_cache.h). Returns whether it hit.
+template <size_t kOlderWays>
+HWY_INLINE bool AccessPastTopTwo(uint64_t* recent, uint64_t* row, size_t older_ways,
+                                 uint64_t line) {
   const size_t position = PositionInRow(row, older_ways, line);
   const bool hit = position < older_ways;
   if (older_ways > 0) {
@@ -98,20 +80,64 @@ HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t g
     row[0] = *recent;
   }
   *recent = line;
+  return hit;
+}
+
+// One granule the long way, in stream order: its region's offset (resolved if new), then the full
+// LRU access; a miss is counted against its region.
+// kPlain: power-of-two sets, line_shift and index_shift 0; kOlderWays: ways - 1 when known at
+// compile time (the default 16-way cache), else 0. With `past_top_two` the caller knows that the
+// granule, taken with its slot's offset, is in neither of its set's two most recent ways.
+template <bool kPlain, size_t kOlderWays>
+HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t granule,
+                          bool past_top_two = false) {
+  const uint64_t id = granule >> kRegionShift;
+  const size_t slot = id & (RegionTable::kSlots - 1);
+  // A region already in its slot had the offset the caller tested the ways with.
+  past_top_two = past_top_two && regions.ids[slot] == id;
+  uint64_t line = granule + regions.offset(id);
+  uint32_t set;
+  if constexpr (kPlain) {
+    set = static_cast<uint32_t>(line & (sets.sets - 1));
+  } else {
+    line >>= sets.line_shift;
+    set = sets.index_of_line(line);
+  }
+  uint64_t* const recent = sets.tags + set;
+  const size_t older_ways = kOlderWays != 0 ? kOlderWays : sets.ways - 1;
+  uint64_t* const row = sets.tags + sets.sets + static_cast<size_t>(set) * older_ways;  // older_of
+  if (!past_top_two) {
+    if (*recent == line) return true;
+    if (older_ways > 0 && row[0] == line) {  // way 1: the two swap (the stream alternates often)
+      row[0] = *recent;
+      *recent = line;
+      return true;
+    }
+  }
+  const bool hit = AccessPastTopTwo<kOlderWays>(recent, row, older_ways, line);
   if (!hit) regions.count_miss(id);
   return hit;
 }
 
-// The granules from `granules` on, while they hit the most recent way of their power-of-two set;
-// returns how many did. Offsets come from the region table without comparing ids: a granule of
-// a region not in its slot can never hit (RegionTable), so it stops the run and AccessOne
-// resolves it. kPlain: line_shift and index_shift 0 (the serial texture replay), line = frame.
-template <bool kPlain>
+// The granules from `granules` on, while they hit one of the two most recent ways of their
+// power-of-two set; replays them and returns how many there were. Runs of most-recent-way hits
+// change no state and are skipped a vector at a time. Streams that alternate two lines of one set
+// (a texture whose rows lie a multiple of the cache's span apart: 37 % of the universal forward
+// pass's accesses hit way 1) would otherwise leave the vector loop every few granules: a vector
+// with a lane that misses way 0 is finished here, its lanes in order, each a way-0 hit (nothing
+// changes) or a way-1 hit (the set's two lines swap), until one that hits neither. Offsets come
+// from the region table without comparing ids: a granule of a region not in its slot can never
+// hit (RegionTable), so it stops the run and AccessOne resolves it. kPlain: line_shift and
+// index_shift 0 (the serial texture replay), line = frame. kOlderWays: ways - 1 when known at
+// compile time, else 0.
+template <bool kPlain, size_t kOlderWays>
 class RecentHits {
  public:
   RecentHits(const SetArray& sets, const RegionTable& regions)
       : offsets_(regions.offsets),
         recent_(sets.tags),
+        way1_(sets.tags + sets.sets),
+        older_ways_(kOlderWays != 0 ? kOlderWays : sets.ways - 1),
         slot_mask_(hn::Set(d_, RegionTable::kSlots - 1)),
         index_mask_(hn::Set(d_, sets.sets - 1)),
         last_set_(sets.sets - 1),
@@ -122,46 +148,95 @@ class RecentHits {
     const size_t lanes = hn::Lanes(d_);
     size_t i = 0;
     // Two vectors per branch: runs of most-recent-way hits average about 20 granules.
-    for (; i + 2 * lanes <= count; i += 2 * lanes) {
-      const auto first = Hit(granules + i);
-      const auto second = Hit(granules + i + lanes);
-      if (HWY_UNLIKELY(!hn::AllTrue(d_, hn::And(first, second)))) {
-        if (!hn::AllTrue(d_, first)) return i + hn::FindKnownFirstTrue(d_, hn::Not(first));
-        return i + lanes + hn::FindKnownFirstTrue(d_, hn::Not(second));
+    while (i + 2 * lanes <= count) {
+      hn::Vec<D> line, index;
+      const auto first = Hit(granules + i, line, index);
+      hn::Vec<D> second_line, second_index;
+      const auto second = Hit(granules + i + lanes, second_line, second_index);
+      if (HWY_LIKELY(hn::AllTrue(d_, hn::And(first, second)))) {
+        i += 2 * lanes;
+        continue;
       }
+      if (hn::AllTrue(d_, first)) {  // the first vector changed nothing: the second's test holds
+        const size_t replayed = TopTwo(second, second_line, second_index);
+        i += lanes + replayed;
+        if (replayed < lanes) return i;
+        continue;
+      }
+      // The second vector is tested again against the state the first leaves.
+      const size_t replayed = TopTwo(first, line, index);
+      i += replayed;
+      if (replayed < lanes) return i;
     }
     for (; i + lanes <= count; i += lanes) {
-      const auto hit = Hit(granules + i);
-      if (!hn::AllTrue(d_, hit)) return i + hn::FindKnownFirstTrue(d_, hn::Not(hit));
+      hn::Vec<D> line, index;
+      const auto hit = Hit(granules + i, line, index);
+      if (hn::AllTrue(d_, hit)) continue;
+      const size_t replayed = TopTwo(hit, line, index);
+      if (replayed < lanes) return i + replayed;
     }
     for (; i < count; ++i) {
       const uint64_t slot = (granules[i] >> kRegionShift) & (RegionTable::kSlots - 1);
       const uint64_t frame = granules[i] + offsets_[slot];
-      if (recent_[(frame >> index_shift_) & last_set_] != frame >> line_shift_) return i;
+      if (!StepTopTwo(frame >> line_shift_, (frame >> index_shift_) & last_set_)) return i;
     }
     return count;
   }
 
  private:
-  // Lanes whose line is its set's most recent way. Set indices stay in range for every lane.
-  HWY_INLINE auto Hit(const uint64_t* granules) const {
-    const hn::RebindToSigned<D> di;
+  // Lanes whose line is its set's most recent way; `line` and `index` (set index) of every lane.
+  // Set indices stay in range for every lane.
+  HWY_INLINE auto Hit(const uint64_t* granules, hn::Vec<D>& line, hn::Vec<D>& index) const {
     const auto granule = hn::LoadU(d_, granules);
     const auto slot = hn::And(hn::ShiftRight<kRegionShift>(granule), slot_mask_);
-    const auto frame = hn::Add(granule, hn::GatherIndex(d_, offsets_, hn::BitCast(di, slot)));
+    const auto frame = hn::Add(granule, hn::GatherIndex(d_, offsets_, hn::BitCast(di_, slot)));
     if constexpr (kPlain) {
-      const auto index = hn::And(frame, index_mask_);
-      return hn::Eq(hn::GatherIndex(d_, recent_, hn::BitCast(di, index)), frame);
+      line = frame;
+      index = hn::And(frame, index_mask_);
     } else {
-      const auto line = hn::ShiftRightSame(frame, line_shift_);
-      const auto index = hn::And(hn::ShiftRightSame(frame, index_shift_), index_mask_);
-      return hn::Eq(hn::GatherIndex(d_, recent_, hn::BitCast(di, index)), line);
+      line = hn::ShiftRightSame(frame, line_shift_);
+      index = hn::And(hn::ShiftRightSame(frame, index_shift_), index_mask_);
     }
+    return hn::Eq(hn::GatherIndex(d_, recent_, hn::BitCast(di_, index)), line);
+  }
+
+  // Replays the lanes of a vector in order from its first lane that missed way 0 (`recent`: the
+  // lanes that hit way 0 of the state before the vector, not all of them; the lanes before that
+  // one changed nothing) while they hit way 0 or way 1 of their sets as they stand; returns how
+  // many lanes were replayed.
+  HWY_INLINE size_t TopTwo(hn::Mask<D> recent, hn::Vec<D> line, hn::Vec<D> index) const {
+    const size_t lanes = hn::Lanes(d_);
+    size_t j = hn::FindKnownFirstTrue(d_, hn::Not(recent));
+    if (older_ways_ == 0) return j;
+    HWY_ALIGN uint64_t lane_line[hn::MaxLanes(D())];
+    HWY_ALIGN uint64_t lane_set[hn::MaxLanes(D())];
+    hn::Store(line, d_, lane_line);
+    hn::Store(index, d_, lane_set);
+    for (; j < lanes; ++j) {
+      if (!StepTopTwo(lane_line[j], lane_set[j])) return j;
+    }
+    return lanes;
+  }
+
+  // The access of `line` in set `set` if the set's two most recent ways hold it (then true: a
+  // way-1 hit swaps the two); false, and nothing changed, if they do not.
+  HWY_INLINE bool StepTopTwo(uint64_t line, uint64_t set) const {
+    uint64_t* const most_recent = recent_ + set;
+    if (*most_recent == line) return true;
+    if (older_ways_ == 0) return false;
+    uint64_t* const way1 = way1_ + set * older_ways_;  // SetArray::older_of
+    if (*way1 != line) return false;
+    *way1 = *most_recent;
+    *most_recent = line;
+    return true;
   }
 
   D d_;
+  hn::RebindToSigned<D> di_;
   const uint64_t* offsets_;
-  const uint64_t* recent_;
+  uint64_t* recent_;
+  uint64_t* way1_;
+  size_t older_ways_;
   hn::Vec<D> slot_mask_, index_mask_;
   uint64_t last_set_;
   int line_shift_, index_shift_;
@@ -170,13 +245,14 @@ class RecentHits {
 template <bool kPlain, size_t kOlderWays>
 uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
                               const uint64_t* granules, size_t count) {
-  const RecentHits<kPlain> recent_hits(sets, regions);
+  const RecentHits<kPlain, kOlderWays> recent_hits(sets, regions);
   uint64_t misses = 0;
   size_t i = 0;
   while (true) {
     i += recent_hits.Leading(granules + i, count - i);
     if (i == count) return misses;
-    misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i]);
+    // Leading stopped at a granule that missed its set's two most recent ways.
+    misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
     ++i;
   }
 }

@@ -1,6 +1,6 @@
 // The texture replay's inner loop (memory/texture_replay_kernel.h, replay_granules) against a
 // plain per-access LRU written here, on streams made to defeat its shortcuts: lines of one set
-// alternating (hits in way 1 and deeper), more regions than the region table's 64 slots (ids
+// alternating (hits in way 1 and deeper, inside vectors too), more regions than the region table's 64 slots (ids
 // sharing a slot, interleaved), power-of-two and other set counts, 1 to 16 ways, wide lines, and
 // set indices taken above a shift (as the parallel replay's groups do). Every call's misses, the
 // misses of every region and the final order of every set's ways must be the reference's.
@@ -105,7 +105,7 @@ std::vector<std::vector<uint64_t>> adversarial_calls(const Shape& s, uint64_t se
   };
   for (int block = 0; block < 400; ++block) {
     const uint64_t id = rng() % 4 == 0 ? 0 : 1 + rng() % 3;
-    switch (rng() % 6) {
+    switch (rng() % 7) {
       case 0: {  // two or three lines of one set alternating: way-1 and way-2 hits
         const uint64_t base = rng() % 64, count = 2 + rng() % 2;
         for (int i = 0; i < 40; ++i) push(granule(s, id, base + (i % count) * set_stride, 0));
@@ -133,6 +133,16 @@ std::vector<std::vector<uint64_t>> adversarial_calls(const Shape& s, uint64_t se
       }
       case 4: {  // several regions' lines landing in one set, each region alternating
         for (int i = 0; i < 48; ++i) push(granule(s, 1 + i % 4, (i / 4) % 3 * set_stride, 0));
+        break;
+      }
+      case 5: {  // two lines of one set alternating (way-1 hits inside vectors), every fifth
+                 // granule of a region sharing the table slot: the way-1 steps meet a region
+                 // that must be resolved, and the region they use leaves its slot
+        const uint64_t base = rng() % 64;
+        for (int i = 0; i < 60; ++i) {
+          const uint64_t region = i % 5 == 4 ? id + 64 : id;
+          push(granule(s, region, base + (i % 2) * set_stride, 0));
+        }
         break;
       }
       default: {  // random lines of a small pool: hits at every depth and misses
