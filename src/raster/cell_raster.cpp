@@ -171,8 +171,29 @@ CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, fl
 // Minimum and maximum of `rows` rows of `count` floats, `stride` apart, with the scalar
 // semantics lo = x < lo ? x : lo (starting from first[0]), lane by lane: the same value whatever
 // the order (up to the sign of a zero, which no depth compare can see).
+// A whole cell row per row (count 8, the single-sample case): every row in one or two vectors of
+// at most 8 lanes, no scalar tail, on every target (16-lane targets would otherwise go scalar).
+void depth_range_cell_rows(const float* first, int stride, int rows, float* lo_out, float* hi_out) {
+  const hn::CappedTag<float, kCellSizePx> d;
+  const size_t n = hn::Lanes(d);
+  auto vlo = hn::Set(d, first[0]), vhi = vlo;
+  for (int r = 0; r < rows; ++r) {
+    const float* row = first + static_cast<size_t>(r) * stride;
+    for (size_t i = 0; i < kCellSizePx; i += n) {
+      const auto x = hn::LoadU(d, row + i);
+      vlo = hn::IfThenElse(hn::Lt(x, vlo), x, vlo);
+      vhi = hn::IfThenElse(hn::Gt(x, vhi), x, vhi);
+    }
+  }
+  // Every lane started from first[0]: all lanes are NaN when it is, none otherwise, so the
+  // lanes' minimum and maximum (MinOfLanes / MaxOfLanes) are the scalar fold's values.
+  *lo_out = hn::GetLane(hn::MinOfLanes(d, vlo));
+  *hi_out = hn::GetLane(hn::MaxOfLanes(d, vhi));
+}
+
 void DepthRangeKernel(const float* first, int stride, int count, int rows, float* lo_out,
                       float* hi_out) {
+  if (count == kCellSizePx) return depth_range_cell_rows(first, stride, rows, lo_out, hi_out);
   const hn::ScalableTag<float> d;
   const size_t n = hn::Lanes(d);
   float lo = first[0], hi = first[0];
