@@ -261,16 +261,6 @@ CellMask coverage_int64(const EdgeFunction* const* edges, int count, int64_t px0
 
 }  // namespace
 
-CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1) {
-  const int lx0 = std::max(x0 - cell_x0, 0), lx1 = std::min(x1 - cell_x0, kCellSizePx);
-  const int ly0 = std::max(y0 - cell_y0, 0), ly1 = std::min(y1 - cell_y0, kCellSizePx);
-  if (lx0 >= lx1 || ly0 >= ly1) return 0;
-  const uint64_t row = ((uint64_t{1} << (lx1 - lx0)) - 1) << lx0;
-  CellMask mask = 0;
-  for (int ly = ly0; ly < ly1; ++ly) mask |= row << (ly * kCellSizePx);
-  return mask;
-}
-
 CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
   for (int s = 0; s < pattern.count; ++s) out[s] = 0;

@@ -21,8 +21,19 @@ constexpr int kCellPixels = kCellSizePx * kCellSizePx;
 // Bit (ly * 8 + lx) of a cell mask is pixel (cell_x0 + lx, cell_y0 + ly).
 using CellMask = uint64_t;
 
-// The pixels of the cell at (cell_x0, cell_y0) inside the rectangle [x0, x1) x [y0, y1).
-CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1);
+// The pixels of the cell at (cell_x0, cell_y0) inside the rectangle [x0, x1) x [y0, y1): the
+// row's bits copied into every byte (a multiply by 0x0101...: a byte-wide value cannot carry),
+// then the bytes of rows [ly0, ly1) kept. Inline: the tile loop asks once per cell and triangle.
+inline CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1) {
+  const int lx0 = x0 - cell_x0 > 0 ? x0 - cell_x0 : 0, lx1 = x1 - cell_x0 < kCellSizePx ? x1 - cell_x0 : kCellSizePx;
+  const int ly0 = y0 - cell_y0 > 0 ? y0 - cell_y0 : 0, ly1 = y1 - cell_y0 < kCellSizePx ? y1 - cell_y0 : kCellSizePx;
+  if (lx0 >= lx1 || ly0 >= ly1) return 0;
+  const uint64_t row = ((uint64_t{1} << (lx1 - lx0)) - 1) << lx0;
+  const int row_count = ly1 - ly0;
+  const uint64_t rows = (row_count == kCellSizePx ? ~uint64_t{0} : (uint64_t{1} << (row_count * kCellSizePx)) - 1)
+                        << (ly0 * kCellSizePx);
+  return (row * 0x0101010101010101u) & rows;
+}
 
 // Coverage of the cell at (cell_x0, cell_y0), restricted to `valid` pixels: out[s] gets the
 // pixels whose sample s is inside (top-left rule included). Returns the union over samples.
