@@ -261,28 +261,43 @@ CellMask coverage_int64(const EdgeFunction* const* edges, int count, int64_t px0
 
 }  // namespace
 
-CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
+  for (int k = 0; k < 3; ++k) {
+    const EdgeFunction& e = t.edge[k];
+    c_biased[k] = e.c + e.bias;
+    lowest[k] = std::min<int64_t>(e.a, 0) * kCellSpanSubpx + std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
+    highest[k] = std::max<int64_t>(e.a, 0) * kCellSpanSubpx + std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
+    int32_ok[k] = std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
+    a_step[k] = int32_ok[k] ? static_cast<int32_t>(e.a * kSubpixelScale) : 0;
+    b_step[k] = int32_ok[k] ? static_cast<int32_t>(e.b * kSubpixelScale) : 0;
+  }
+}
+
+CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
-  for (int s = 0; s < pattern.count; ++s) out[s] = 0;
-  if (!valid) return 0;
+  const auto nothing = [&] {
+    for (int s = 0; s < pattern.count; ++s) out[s] = 0;
+    return CellMask{0};
+  };
+  if (!valid) return nothing();
+  const TriangleSetup& t = *edges.setup;
   const int64_t px0 = int64_t{cell_x0} * kSubpixelScale;
   const int64_t py0 = int64_t{cell_y0} * kSubpixelScale;
   // Trivial reject / accept from each edge's extreme values over the cell.
   const EdgeFunction* partial[3];
+  int32_t a[3], b[3];
   int64_t corner[3];
   int partial_count = 0;
   bool int32_ok = true;
-  for (const EdgeFunction& e : t.edge) {
-    const int64_t at_corner = e.at(px0, py0) + e.bias;
-    const int64_t lo = at_corner + std::min<int64_t>(e.a, 0) * kCellSpanSubpx +
-                       std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
-    const int64_t hi = at_corner + std::max<int64_t>(e.a, 0) * kCellSpanSubpx +
-                       std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
-    if (hi < 0) return 0;
-    if (lo >= 0) continue;
+  for (int k = 0; k < 3; ++k) {
+    const int64_t at_corner = t.edge[k].a * px0 + t.edge[k].b * py0 + edges.c_biased[k];
+    if (at_corner + edges.highest[k] < 0) return nothing();
+    if (at_corner + edges.lowest[k] >= 0) continue;
     corner[partial_count] = at_corner;
-    partial[partial_count++] = &e;
-    int32_ok = int32_ok && std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
+    a[partial_count] = edges.a_step[k];
+    b[partial_count] = edges.b_step[k];
+    partial[partial_count++] = &t.edge[k];
+    int32_ok = int32_ok && edges.int32_ok[k];
   }
   const int first_bit = std::countr_zero(valid) / kCellSizePx * kCellSizePx;
   const int end_bit = (kCellPixels - 1 - std::countl_zero(valid)) / kCellSizePx * kCellSizePx + kCellSizePx;
@@ -290,11 +305,9 @@ CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int
   for (int s = 0; s < pattern.count; ++s) {
     CellMask bits = ~CellMask{0};
     if (partial_count > 0 && int32_ok) {
-      int32_t e0[3], a[3], b[3];
+      int32_t e0[3];
       for (int k = 0; k < partial_count; ++k) {
         e0[k] = static_cast<int32_t>(corner[k] + partial[k]->a * pattern.x[s] + partial[k]->b * pattern.y[s]);
-        a[k] = static_cast<int32_t>(partial[k]->a * kSubpixelScale);
-        b[k] = static_cast<int32_t>(partial[k]->b * kSubpixelScale);
       }
       bits = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, a, b, partial_count, first_bit, end_bit);
     } else if (partial_count > 0) {

@@ -35,11 +35,27 @@ inline CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1,
   return (row * 0x0101010101010101u) & rows;
 }
 
+// A triangle's edges prepared once for cell_coverage of many cells: each edge's constant with
+// the fill-rule bias folded in, its extreme offsets over a cell's sample span (for trivial
+// reject / accept) and whether its steps fit the int32 lanes.
+struct CellEdges {
+  explicit CellEdges(const TriangleSetup& t);
+  const TriangleSetup* setup;
+  int64_t c_biased[3];
+  int64_t lowest[3], highest[3];  // min / max of a * dx + b * dy over dx, dy in [0, span]
+  int32_t a_step[3], b_step[3];   // a and b per pixel (x 256), valid where int32_ok
+  bool int32_ok[3];
+};
+
 // Coverage of the cell at (cell_x0, cell_y0), restricted to `valid` pixels: out[s] gets the
 // pixels whose sample s is inside (top-left rule included). Returns the union over samples.
 // Bit-exact with the scalar edge functions: this is integer arithmetic on every path.
-CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]);
+inline CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+                              int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
+  return cell_coverage(CellEdges(t), pattern, cell_x0, cell_y0, valid, out);
+}
 
 // An affine function of the pixel position, v(x, y) = origin + dx * (x - cell_x0) +
 // dy * (y - cell_y0) with x, y at pixel-centre offsets, in float.

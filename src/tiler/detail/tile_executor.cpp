@@ -149,6 +149,7 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
   const TileRect& rect = ctx.rect;
   const int samples = ctx.pattern.count;
   const TrianglePlanes planes(t);
+  const CellEdges edges(t);
   const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
   const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
   const int ci0 = (std::max(rect.x0, t.min_x) - cells.first_x) / kCellSizePx;
@@ -162,7 +163,7 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
       CellState& st = scratch.cells[cell];
       // Pixels of the cell inside both the tile and the triangle's bounding box.
       const CellMask valid = cell_rect_mask(cx, cy, std::max(rect.x0, t.min_x), std::max(rect.y0, t.min_y), x_end, y_end);
-      st.covered_any = cell_coverage(t, ctx.pattern, cx, cy, valid, st.covered);
+      st.covered_any = cell_coverage(edges, ctx.pattern, cx, cy, valid, st.covered);
       if (!st.covered_any) continue;
       scratch.touched.push_back(cell);
       ++counters.cells_rasterized;
