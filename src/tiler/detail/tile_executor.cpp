@@ -5,6 +5,7 @@
 #include "tiler/detail/tile_executor.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
 
@@ -96,14 +97,18 @@ inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
   return static_cast<uint32_t>(((m >> bit) & 3u) | (((m >> (bit + kCellSizePx)) & 3u) << 2));
 }
 
-// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s).
-inline QuadCoverage spread_lanes(uint32_t lanes, int s) {
-  QuadCoverage c = 0;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if ((lanes >> lane) & 1u) c |= QuadCoverage{1} << (lane * kMaxSamples + s);
+// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s): a table
+// of the 16 lane patterns for sample 0, shifted to sample s.
+constexpr std::array<QuadCoverage, 16> kSpreadLanes = [] {
+  std::array<QuadCoverage, 16> table{};
+  for (uint32_t lanes = 0; lanes < 16; ++lanes) {
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if ((lanes >> lane) & 1u) table[lanes] |= QuadCoverage{1} << (lane * kMaxSamples);
+    }
   }
-  return c;
-}
+  return table;
+}();
+inline QuadCoverage spread_lanes(uint32_t lanes, int s) { return kSpreadLanes[lanes & 0xFu] << s; }
 
 // Scratch reused by every tile a thread runs (no allocation in the tile loop once warm).
 struct TileScratch {
