@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cstring>
 
 #include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
@@ -43,14 +44,23 @@ class TileFetch final : public FramebufferFetch {
     const size_t offsets[kQuadLanes] = {0, right, below, below + right};
     if (attachment == depth_index_) {
       const float* depth = memory_.depth_plane();
-      for (int q = 0; q < quad_count; ++q) {
-        const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
-        for (int lane = 0; lane < kQuadLanes; ++lane) channel[0][q * kQuadLanes + lane] = depth[i + offsets[lane]];
+      if (memory_.samples() == 1) {
+        // Each quad row is two adjacent floats of the plane.
+        for (int q = 0; q < quad_count; ++q) {
+          const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, 0);
+          std::memcpy(channel[0] + q * kQuadLanes, depth + i, 2 * sizeof(float));
+          std::memcpy(channel[0] + q * kQuadLanes + 2, depth + i + below, 2 * sizeof(float));
+        }
+      } else {
+        for (int q = 0; q < quad_count; ++q) {
+          const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
+          for (int lane = 0; lane < kQuadLanes; ++lane) channel[0][q * kQuadLanes + lane] = depth[i + offsets[lane]];
+        }
       }
       const int fragments = quad_count * kQuadLanes;
-      std::fill_n(channel[1], fragments, 0.0f);
-      std::fill_n(channel[2], fragments, 0.0f);
-      std::fill_n(channel[3], fragments, 1.0f);
+      if (channel[1]) std::fill_n(channel[1], fragments, 0.0f);
+      if (channel[2]) std::fill_n(channel[2], fragments, 0.0f);
+      if (channel[3]) std::fill_n(channel[3], fragments, 1.0f);
       return;
     }
     const glm::vec4* colour = memory_.color_plane(attachment);
