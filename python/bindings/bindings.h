@@ -4,6 +4,7 @@
 #include "raster/texture_compression.h"
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <pybind11/pybind11.h>
 
@@ -26,6 +27,7 @@ struct RenderResult {
   std::shared_ptr<const Scene> scene;  // keeps textures the context's surfaces may refer to
   RenderedFrame frame;
   std::string report_json;
+  std::vector<double> frame_times_ms;  // the timed frames after the warm-up (frames > 0)
 };
 
 // The camera override of ontile.render(view=...): a world-to-camera matrix (row-major, as NumPy
@@ -40,9 +42,11 @@ void bind_render(pybind11::module_& m);
 void bind_python_pipelines(pybind11::module_& m);
 
 // Renders `settings` with `pipeline` (a registered one when null: settings.pipeline) and fills
-// the report as `ontile render --report` writes it.
+// the report as `ontile render --report` writes it. With frames > 0, as `ontile render --frames
+// N`: the first render is a warm-up, `frames` more are timed (the whole render call each, with
+// frame_index 1, 2, ...), and the last one is kept.
 std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const RenderSettings& settings,
                                           const CameraOverride& camera, bool tile_report, const std::string& gpu,
-                                          Pipeline* pipeline);
+                                          Pipeline* pipeline, int frames = 0);
 
 }  // namespace ontile::python

@@ -1,6 +1,8 @@
 // ontile.load_scene, ontile.pipelines and ontile.render for the registered (C++) pipelines:
 // the same render_frame call and report JSON as `ontile render`, with the image handed to
 // NumPy. ontile::Error becomes ontile.Error, a ValueError.
+#include <chrono>
+
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -12,6 +14,7 @@
 #include "render_options.h"
 #include "scene/gltf_loader.h"
 #include "util/error.h"
+#include "util/heap_tuning.h"
 
 namespace py = pybind11;
 
@@ -69,7 +72,9 @@ glm::dmat4 matrix_from_numpy(const py::array_t<double, py::array::c_style | py::
 std::unique_ptr<RenderResult> render_any(const LoadedScene& scene, const py::object& pipeline, int width_px,
                                                 int height_px, int camera_index, std::optional<py::array> view,
                                                 std::optional<float> yfov_rad, std::optional<float> znear,
-                                                std::optional<float> zfar, int threads, const py::dict& options) {
+                                                std::optional<float> zfar, int threads, int frames,
+                                                const py::dict& options) {
+  if (frames < 0 || frames > 100) throw Error("frames: " + std::to_string(frames) + " not in 0..100");
   std::unique_ptr<Pipeline> python_pipeline;
   ParsedOptions parsed;
   if (py::isinstance<py::str>(pipeline)) {
@@ -89,14 +94,14 @@ std::unique_ptr<RenderResult> render_any(const LoadedScene& scene, const py::obj
     camera.has_view = true;
     camera.view = matrix_from_numpy(*view);
   }
-  return render_with(scene, parsed.settings, camera, parsed.tile_report, parsed.gpu, python_pipeline.get());
+  return render_with(scene, parsed.settings, camera, parsed.tile_report, parsed.gpu, python_pipeline.get(), frames);
 }
 
 }  // namespace
 
 std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const RenderSettings& settings,
                                           const CameraOverride& camera, bool tile_report, const std::string& gpu,
-                                          Pipeline* pipeline) {
+                                          Pipeline* pipeline, int frames) {
   auto result = std::make_unique<RenderResult>();
   result->scene = scene.scene;
   std::unique_ptr<Pipeline> registered;
@@ -104,22 +109,36 @@ std::unique_ptr<RenderResult> render_with(const LoadedScene& scene, const Render
     registered = make_pipeline(settings.pipeline);
     pipeline = registered.get();
   }
-  FrameInputs inputs = frame_inputs(*scene.scene, settings);
-  if (camera.has_view) inputs.camera.world = glm::inverse(camera.view);  // camera-to-world
-  if (camera.yfov_rad) inputs.camera.yfov_rad = *camera.yfov_rad;
-  if (camera.znear) inputs.camera.znear = *camera.znear;
-  if (camera.zfar) inputs.camera.zfar = *camera.zfar;
-  result->frame.camera = inputs.camera;
-  result->frame.context = std::make_unique<RenderContext>(settings.context);
-  if (registered) {
-    // C++ from here to the end of the frame: other Python threads may run meanwhile.
-    py::gil_scoped_release release;
-    result->frame.outputs = pipeline->render(*result->frame.context, inputs);
-  } else {
-    result->frame.outputs = pipeline->render(*result->frame.context, inputs);
+  // Steady-state frame times: the frames reuse the heap instead of fresh pages (heap_tuning.h).
+  if (frames > 0) keep_freed_memory_in_the_heap();
+  for (int frame_index = 0; frame_index <= frames; ++frame_index) {
+    const auto start = std::chrono::steady_clock::now();
+    RenderSettings frame_settings = settings;
+    frame_settings.frame_index = frame_index;
+    FrameInputs inputs = frame_inputs(*scene.scene, frame_settings);
+    if (camera.has_view) inputs.camera.world = glm::inverse(camera.view);  // camera-to-world
+    if (camera.yfov_rad) inputs.camera.yfov_rad = *camera.yfov_rad;
+    if (camera.znear) inputs.camera.znear = *camera.znear;
+    if (camera.zfar) inputs.camera.zfar = *camera.zfar;
+    RenderedFrame frame;
+    frame.camera = inputs.camera;
+    frame.context = std::make_unique<RenderContext>(settings.context);
+    if (registered) {
+      // C++ from here to the end of the frame: other Python threads may run meanwhile.
+      py::gil_scoped_release release;
+      frame.outputs = pipeline->render(*frame.context, inputs);
+    } else {
+      frame.outputs = pipeline->render(*frame.context, inputs);
+    }
+    if (!frame.outputs.color) throw Error("pipeline '" + settings.pipeline + "' returned no image");
+    if (frame_index > 0) {
+      result->frame_times_ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    result->frame = std::move(frame);
   }
-  if (!result->frame.outputs.color) throw Error("pipeline '" + settings.pipeline + "' returned no image");
-  const RenderRun run{scene.path, settings, "", std::nullopt, tile_report, gpu, scene.texture_compression};
+  const std::optional<int> timed = frames > 0 ? std::optional<int>(frames) : std::nullopt;
+  const RenderRun run{scene.path, settings, "", timed, tile_report, gpu, scene.texture_compression};
   result->report_json = render_report_json(result->frame.outputs.report, run).dump(2) + "\n";
   return result;
 }
@@ -159,6 +178,7 @@ void bind_render(py::module_& m) {
         return std::string(format_name(r.frame.outputs.color->format()));
       })
       .def_readonly("report_json", &RenderResult::report_json)
+      .def_readonly("frame_times_ms", &RenderResult::frame_times_ms)
       .def("write_png", [](const RenderResult& r, const std::string& path) {
         const Surface& color = *r.frame.outputs.color;
         if (color.format() != PixelFormat::RGBA8_SRGB && color.format() != PixelFormat::RGBA8_UNORM) {
@@ -169,7 +189,7 @@ void bind_render(py::module_& m) {
 
   m.def("render", &render_any, py::arg("scene"), py::arg("pipeline"), py::arg("width_px"),
         py::arg("height_px"), py::arg("camera"), py::arg("view"), py::arg("yfov_rad"), py::arg("znear"),
-        py::arg("zfar"), py::arg("threads"), py::arg("options"));
+        py::arg("zfar"), py::arg("threads"), py::arg("frames"), py::arg("options"));
 }
 
 }  // namespace ontile::python

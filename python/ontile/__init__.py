@@ -54,6 +54,26 @@ class RenderResult:
         return self._native.report_json
 
     @property
+    def frame_times_ms(self):
+        """With render(frames=N): the N timed frames' wall-clock times (ms), after one warm-up."""
+        return list(self._native.frame_times_ms)
+
+    @property
+    def median_ms(self):
+        """The timed frames' median (ms), as `ontile render --frames N` prints it; None without frames."""
+        times = sorted(self._native.frame_times_ms)
+        if not times:
+            return None
+        n = len(times)
+        return times[n // 2] if n % 2 else 0.5 * (times[n // 2 - 1] + times[n // 2])
+
+    @property
+    def min_ms(self):
+        """The fastest timed frame (ms); None without frames."""
+        times = self._native.frame_times_ms
+        return min(times) if times else None
+
+    @property
     def report(self):
         if self._report is None:
             self._report = json.loads(self._native.report_json)
@@ -78,7 +98,7 @@ def _size(size):
 
 
 def render(scene, pipeline="lambert", size=(1280, 720), camera=None, view=None, yfov_rad=None,
-           znear=None, zfar=None, threads=0, options=None):
+           znear=None, zfar=None, threads=0, options=None, frames=0):
     """Renders `scene` (an ontile.Scene, or a path to load) and returns a RenderResult.
 
     pipeline: a registered name (ontile.pipelines()) or an ontile.Pipeline object.
@@ -89,8 +109,12 @@ def render(scene, pipeline="lambert", size=(1280, 720), camera=None, view=None, 
     options: the `ontile render` flags by name with underscores: tile, budget, subpixel_bits,
         arch, afbc, texture_cache_kib, rt_cache_kib, parameter_cache_kib, render_graph,
         gbuffer, lights, tiles (per-tile report), and set={KEY: VALUE} for --set.
+    frames: as `ontile render --frames N`: one warm-up render, then N timed ones (0..100); the
+        result keeps the last frame and has frame_times_ms, median_ms and min_ms.
     Bad options raise ValueError (ontile.Error), naming the option.
     """
+    if not isinstance(frames, int) or isinstance(frames, bool):
+        raise ValueError(f"frames: expected a frame count, got {frames!r}")
     if isinstance(scene, str):
         scene = load_scene(scene)
     if isinstance(pipeline, type) and issubclass(pipeline, Pipeline):
@@ -102,5 +126,5 @@ def render(scene, pipeline="lambert", size=(1280, 720), camera=None, view=None, 
         import numpy
         view = numpy.asarray(view, dtype=numpy.float64)
     native = _ontile.render(scene, pipeline, width, height, -1 if camera is None else camera, view,
-                            yfov_rad, znear, zfar, int(threads), dict(options or {}))
+                            yfov_rad, znear, zfar, int(threads), frames, dict(options or {}))
     return RenderResult(native)

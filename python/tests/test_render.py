@@ -15,9 +15,9 @@ class RenderMatchesCli(unittest.TestCase):
         cls.scene = ontile.load_scene(DEMO)
         cls.out = output_dir("render")
 
-    def check_same_as_cli(self, name, pipeline, cli_args, options, threads=0):
+    def check_same_as_cli(self, name, pipeline, cli_args, options, threads=0, frames=0):
         cli_png, cli_report = cli_render(self.out, name + "-cli", ["--pipeline", pipeline, "--size", "160x90"] + cli_args)
-        result = ontile.render(self.scene, pipeline=pipeline, size=SIZE, threads=threads, options=options)
+        result = ontile.render(self.scene, pipeline=pipeline, size=SIZE, threads=threads, options=options, frames=frames)
         self.assertEqual(result.image.shape, (90, 160, 4))
         self.assertEqual(str(result.image.dtype), "uint8")
         png = os.path.join(self.out, name + "-python.png")
@@ -59,6 +59,28 @@ class RenderMatchesCli(unittest.TestCase):
         self.assertEqual(without_timing(result.report), without_timing(cli_report))
         self.assertEqual(result.report["run"]["texture_compression"], "astc8x8")
 
+    def test_frames_time_the_renders_after_a_warm_up_as_the_cli(self):
+        # The same image and report as `ontile render --frames 3` (run.frames included), and
+        # three positive frame times whose median and minimum are the CLI's statistics.
+        result = self.check_same_as_cli("frames", "cartoon", ["--frames", "3", "--threads", "2"], {}, threads=2, frames=3)
+        times = result.frame_times_ms
+        self.assertEqual(len(times), 3)
+        self.assertTrue(all(t > 0.0 for t in times), times)
+        self.assertEqual(result.min_ms, min(times))
+        self.assertEqual(result.median_ms, sorted(times)[1])
+        self.assertEqual(result.report["run"]["frames"], 3)
+        once = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=2)
+        self.assertEqual(once.frame_times_ms, [])
+        self.assertIsNone(once.median_ms)
+        self.assertIsNone(once.report["run"]["frames"])
+        self.assertTrue((once.image == result.image).all())
+
+    def test_transaction_elimination_compares_with_the_previous_of_the_frames(self):
+        # The Mali preset's CRC history is shared by the frames of one call, as the CLI's.
+        result = self.check_same_as_cli("te-frames", "lambert", ["--gpu", "mali-g76", "--frames", "2"],
+                                        {"gpu": "mali-g76"}, frames=2)
+        self.assertGreater(result.report["passes"][0]["attachments"][0]["te_tiles_eliminated"], 0)
+
     def test_thread_count_changes_no_bit(self):
         one = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=1)
         seven = ontile.render(self.scene, pipeline="cartoon", size=SIZE, threads=7)
@@ -94,6 +116,11 @@ class BadInputRaises(unittest.TestCase):
         with self.assertRaises(ValueError) as caught:
             ontile.render(self.scene, **kwargs)
         self.assertIn(fragment, str(caught.exception))
+
+    def test_frame_counts_outside_0_to_100(self):
+        self.assertRaisesValue("frames: -1 not in 0..100", frames=-1)
+        self.assertRaisesValue("frames: 101 not in 0..100", frames=101)
+        self.assertRaisesValue("frames: expected a frame count", frames=2.5)
 
     def test_unknown_option_key(self):
         self.assertRaisesValue("unknown key 'tile_size'", options={"tile_size": 16})

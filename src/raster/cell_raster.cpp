@@ -37,21 +37,54 @@ uint64_t mask_bits(D d, M m) {
   return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
 }
 
-// Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < edges, for bits in
+// Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < kEdges, for bits in
 // [first_bit, end_bit) (others may be set or not). The caller guarantees every partial sum
-// fits int32.
-uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, int edges,
-                        int first_bit, int end_bit) {
+// fits int32. With whole rows per vector (8 or 16 lanes) the next vector's values are this
+// vector's plus b rows: one add per edge instead of two multiplies, the same integers.
+template <int kEdges>
+uint64_t coverage_rows(const int32_t* e0, const int32_t* a, const int32_t* b, int first_bit, int end_bit) {
   const hn::ScalableTag<int32_t> d;
   const size_t n = hn::Lanes(d);
   uint64_t bits = 0;
   // Only the rows holding valid pixels (a small triangle touches a row or two of a cell).
   const size_t begin = static_cast<size_t>(first_bit) / n * n;
   const size_t end = std::min<size_t>((static_cast<size_t>(end_bit) + n - 1) / n * n, kCellPixels);
+  const auto lx = hn::Load(d, kCellLx + begin);
+  const auto ly = hn::Load(d, kCellLy + begin);
+  hn::Vec<decltype(d)> e[kEdges], step[kEdges];
+  for (int k = 0; k < kEdges; ++k) {
+    e[k] = hn::Add(hn::Add(hn::Set(d, e0[k]), hn::Mul(hn::Set(d, a[k]), lx)), hn::Mul(hn::Set(d, b[k]), ly));
+    step[k] = hn::Set(d, b[k] * static_cast<int32_t>(n / kCellSizePx));
+  }
+  for (size_t i = begin;;) {
+    // The sign bit of the OR is set iff some edge value is negative.
+    auto any_negative = e[0];
+    for (int k = 1; k < kEdges; ++k) any_negative = hn::Or(any_negative, e[k]);
+    bits |= mask_bits(d, hn::Gt(any_negative, hn::Set(d, -1))) << i;
+    i += n;
+    if (i >= end) break;
+    for (int k = 0; k < kEdges; ++k) e[k] = hn::Add(e[k], step[k]);
+  }
+  return bits;
+}
+
+uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, int edges,
+                        int first_bit, int end_bit) {
+  const hn::ScalableTag<int32_t> d;
+  const size_t n = hn::Lanes(d);
+  if (n % kCellSizePx == 0 && n <= kCellPixels) {
+    switch (edges) {
+      case 1: return coverage_rows<1>(e0, a, b, first_bit, end_bit);
+      case 2: return coverage_rows<2>(e0, a, b, first_bit, end_bit);
+      default: return coverage_rows<3>(e0, a, b, first_bit, end_bit);
+    }
+  }
+  uint64_t bits = 0;
+  const size_t begin = static_cast<size_t>(first_bit) / n * n;
+  const size_t end = std::min<size_t>((static_cast<size_t>(end_bit) + n - 1) / n * n, kCellPixels);
   for (size_t i = begin; i < end; i += n) {
     const auto lx = hn::Load(d, kCellLx + i);
     const auto ly = hn::Load(d, kCellLy + i);
-    // The sign bit of the OR is set iff some edge value is negative.
     auto any_negative = hn::Zero(d);
     for (int k = 0; k < edges; ++k) {
       const auto e = hn::Add(hn::Add(hn::Set(d, e0[k]), hn::Mul(hn::Set(d, a[k]), lx)),
@@ -138,8 +171,29 @@ CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, fl
 // Minimum and maximum of `rows` rows of `count` floats, `stride` apart, with the scalar
 // semantics lo = x < lo ? x : lo (starting from first[0]), lane by lane: the same value whatever
 // the order (up to the sign of a zero, which no depth compare can see).
+// A whole cell row per row (count 8, the single-sample case): every row in one or two vectors of
+// at most 8 lanes, no scalar tail, on every target (16-lane targets would otherwise go scalar).
+void depth_range_cell_rows(const float* first, int stride, int rows, float* lo_out, float* hi_out) {
+  const hn::CappedTag<float, kCellSizePx> d;
+  const size_t n = hn::Lanes(d);
+  auto vlo = hn::Set(d, first[0]), vhi = vlo;
+  for (int r = 0; r < rows; ++r) {
+    const float* row = first + static_cast<size_t>(r) * stride;
+    for (size_t i = 0; i < kCellSizePx; i += n) {
+      const auto x = hn::LoadU(d, row + i);
+      vlo = hn::IfThenElse(hn::Lt(x, vlo), x, vlo);
+      vhi = hn::IfThenElse(hn::Gt(x, vhi), x, vhi);
+    }
+  }
+  // Every lane started from first[0]: all lanes are NaN when it is, none otherwise, so the
+  // lanes' minimum and maximum (MinOfLanes / MaxOfLanes) are the scalar fold's values.
+  *lo_out = hn::GetLane(hn::MinOfLanes(d, vlo));
+  *hi_out = hn::GetLane(hn::MaxOfLanes(d, vhi));
+}
+
 void DepthRangeKernel(const float* first, int stride, int count, int rows, float* lo_out,
                       float* hi_out) {
+  if (count == kCellSizePx) return depth_range_cell_rows(first, stride, rows, lo_out, hi_out);
   const hn::ScalableTag<float> d;
   const size_t n = hn::Lanes(d);
   float lo = first[0], hi = first[0];
@@ -207,38 +261,43 @@ CellMask coverage_int64(const EdgeFunction* const* edges, int count, int64_t px0
 
 }  // namespace
 
-CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1) {
-  const int lx0 = std::max(x0 - cell_x0, 0), lx1 = std::min(x1 - cell_x0, kCellSizePx);
-  const int ly0 = std::max(y0 - cell_y0, 0), ly1 = std::min(y1 - cell_y0, kCellSizePx);
-  if (lx0 >= lx1 || ly0 >= ly1) return 0;
-  const uint64_t row = ((uint64_t{1} << (lx1 - lx0)) - 1) << lx0;
-  CellMask mask = 0;
-  for (int ly = ly0; ly < ly1; ++ly) mask |= row << (ly * kCellSizePx);
-  return mask;
+CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
+  for (int k = 0; k < 3; ++k) {
+    const EdgeFunction& e = t.edge[k];
+    c_biased[k] = e.c + e.bias;
+    lowest[k] = std::min<int64_t>(e.a, 0) * kCellSpanSubpx + std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
+    highest[k] = std::max<int64_t>(e.a, 0) * kCellSpanSubpx + std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
+    int32_ok[k] = std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
+    a_step[k] = int32_ok[k] ? static_cast<int32_t>(e.a * kSubpixelScale) : 0;
+    b_step[k] = int32_ok[k] ? static_cast<int32_t>(e.b * kSubpixelScale) : 0;
+  }
 }
 
-CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
-  for (int s = 0; s < pattern.count; ++s) out[s] = 0;
-  if (!valid) return 0;
+  const auto nothing = [&] {
+    for (int s = 0; s < pattern.count; ++s) out[s] = 0;
+    return CellMask{0};
+  };
+  if (!valid) return nothing();
+  const TriangleSetup& t = *edges.setup;
   const int64_t px0 = int64_t{cell_x0} * kSubpixelScale;
   const int64_t py0 = int64_t{cell_y0} * kSubpixelScale;
   // Trivial reject / accept from each edge's extreme values over the cell.
   const EdgeFunction* partial[3];
+  int32_t a[3], b[3];
   int64_t corner[3];
   int partial_count = 0;
   bool int32_ok = true;
-  for (const EdgeFunction& e : t.edge) {
-    const int64_t at_corner = e.at(px0, py0) + e.bias;
-    const int64_t lo = at_corner + std::min<int64_t>(e.a, 0) * kCellSpanSubpx +
-                       std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
-    const int64_t hi = at_corner + std::max<int64_t>(e.a, 0) * kCellSpanSubpx +
-                       std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
-    if (hi < 0) return 0;
-    if (lo >= 0) continue;
+  for (int k = 0; k < 3; ++k) {
+    const int64_t at_corner = t.edge[k].a * px0 + t.edge[k].b * py0 + edges.c_biased[k];
+    if (at_corner + edges.highest[k] < 0) return nothing();
+    if (at_corner + edges.lowest[k] >= 0) continue;
     corner[partial_count] = at_corner;
-    partial[partial_count++] = &e;
-    int32_ok = int32_ok && std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
+    a[partial_count] = edges.a_step[k];
+    b[partial_count] = edges.b_step[k];
+    partial[partial_count++] = &t.edge[k];
+    int32_ok = int32_ok && edges.int32_ok[k];
   }
   const int first_bit = std::countr_zero(valid) / kCellSizePx * kCellSizePx;
   const int end_bit = (kCellPixels - 1 - std::countl_zero(valid)) / kCellSizePx * kCellSizePx + kCellSizePx;
@@ -246,11 +305,9 @@ CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int
   for (int s = 0; s < pattern.count; ++s) {
     CellMask bits = ~CellMask{0};
     if (partial_count > 0 && int32_ok) {
-      int32_t e0[3], a[3], b[3];
+      int32_t e0[3];
       for (int k = 0; k < partial_count; ++k) {
         e0[k] = static_cast<int32_t>(corner[k] + partial[k]->a * pattern.x[s] + partial[k]->b * pattern.y[s]);
-        a[k] = static_cast<int32_t>(partial[k]->a * kSubpixelScale);
-        b[k] = static_cast<int32_t>(partial[k]->b * kSubpixelScale);
       }
       bits = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, a, b, partial_count, first_bit, end_bit);
     } else if (partial_count > 0) {

@@ -21,14 +21,41 @@ constexpr int kCellPixels = kCellSizePx * kCellSizePx;
 // Bit (ly * 8 + lx) of a cell mask is pixel (cell_x0 + lx, cell_y0 + ly).
 using CellMask = uint64_t;
 
-// The pixels of the cell at (cell_x0, cell_y0) inside the rectangle [x0, x1) x [y0, y1).
-CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1);
+// The pixels of the cell at (cell_x0, cell_y0) inside the rectangle [x0, x1) x [y0, y1): the
+// row's bits copied into every byte (a multiply by 0x0101...: a byte-wide value cannot carry),
+// then the bytes of rows [ly0, ly1) kept. Inline: the tile loop asks once per cell and triangle.
+inline CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1) {
+  const int lx0 = x0 - cell_x0 > 0 ? x0 - cell_x0 : 0, lx1 = x1 - cell_x0 < kCellSizePx ? x1 - cell_x0 : kCellSizePx;
+  const int ly0 = y0 - cell_y0 > 0 ? y0 - cell_y0 : 0, ly1 = y1 - cell_y0 < kCellSizePx ? y1 - cell_y0 : kCellSizePx;
+  if (lx0 >= lx1 || ly0 >= ly1) return 0;
+  const uint64_t row = ((uint64_t{1} << (lx1 - lx0)) - 1) << lx0;
+  const int row_count = ly1 - ly0;
+  const uint64_t rows = (row_count == kCellSizePx ? ~uint64_t{0} : (uint64_t{1} << (row_count * kCellSizePx)) - 1)
+                        << (ly0 * kCellSizePx);
+  return (row * 0x0101010101010101u) & rows;
+}
+
+// A triangle's edges prepared once for cell_coverage of many cells: each edge's constant with
+// the fill-rule bias folded in, its extreme offsets over a cell's sample span (for trivial
+// reject / accept) and whether its steps fit the int32 lanes.
+struct CellEdges {
+  explicit CellEdges(const TriangleSetup& t);
+  const TriangleSetup* setup;
+  int64_t c_biased[3];
+  int64_t lowest[3], highest[3];  // min / max of a * dx + b * dy over dx, dy in [0, span]
+  int32_t a_step[3], b_step[3];   // a and b per pixel (x 256), valid where int32_ok
+  bool int32_ok[3];
+};
 
 // Coverage of the cell at (cell_x0, cell_y0), restricted to `valid` pixels: out[s] gets the
 // pixels whose sample s is inside (top-left rule included). Returns the union over samples.
 // Bit-exact with the scalar edge functions: this is integer arithmetic on every path.
-CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]);
+inline CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
+                              int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
+  return cell_coverage(CellEdges(t), pattern, cell_x0, cell_y0, valid, out);
+}
 
 // An affine function of the pixel position, v(x, y) = origin + dx * (x - cell_x0) +
 // dy * (y - cell_y0) with x, y at pixel-centre offsets, in float.

@@ -10,7 +10,9 @@ void FramebufferFetch::load_quads(int input_slot, const int32_t* quad_x_px, cons
   for (int q = 0; q < quad_count; ++q) {
     for (int lane = 0; lane < kQuadLanes; ++lane) {
       const glm::vec4 v = load(input_slot, quad_x_px[q] + (lane & 1), quad_y_px[q] + (lane >> 1), sample);
-      for (int c = 0; c < 4; ++c) channel[c][q * kQuadLanes + lane] = v[c];
+      for (int c = 0; c < 4; ++c) {
+        if (channel[c]) channel[c][q * kQuadLanes + lane] = v[c];
+      }
     }
   }
 }

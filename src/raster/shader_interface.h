@@ -31,7 +31,8 @@ class FramebufferFetch {
   virtual glm::vec4 load(int input_slot, int x_px, int y_px, int sample) const = 0;
   // load() of every lane of quads [0, quad_count) (top-left pixels quad_x_px, quad_y_px) into
   // channel[c][quad * 4 + lane]: one call per batch instead of one per fragment. Reads have no
-  // side effects, so helper lanes are read too. Default: load() lane by lane.
+  // side effects, so helper lanes are read too. For a depth input channels 1..3 (0, 0, 1) may be
+  // null, and are then not written. Default: load() lane by lane.
   virtual void load_quads(int input_slot, const int32_t* quad_x_px, const int32_t* quad_y_px, int quad_count,
                           int sample, float* const channel[4]) const;
 };

@@ -223,7 +223,12 @@ TEST(UniversalLitLighting, BatchLanesMatchPerFragmentBlinnPhongOnEveryTarget) {
         batch->varyings[MeshVertexShader::kWorldPos + c][f] = position[c];
       }
       for (int c = 0; c < 4; ++c) albedo[c][f] = unit(rng);
-      visibility[f] = f % 3 == 0 ? 1.0f : unit(rng);
+      // Albedos at the edges of the zero-radiance shortcut (a negative, a -0 and a huge channel
+      // must still take the power), and fully shadowed fragments (radiance 0, power skipped).
+      if (f == 13) albedo[1][f] = -albedo[1][f];
+      if (f == 17) albedo[0][f] = -0.0f;
+      if (f == 21) albedo[2][f] = 3.0e38f;
+      visibility[f] = f % 3 == 0 ? 1.0f : f % 3 == 1 && f % 2 == 0 ? 0.0f : unit(rng);
     }
     const uint64_t lit = (uint64_t{rng()} << 32 | rng()) | 0x222u;
     alignas(64) float rgb[3][kBatchFragments];

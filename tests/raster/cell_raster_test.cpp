@@ -85,6 +85,25 @@ TEST(CellRaster, SteepEdgesUseTheInt64PathAndStayExact) {
   EXPECT_GT(steep_edges, 0) << "no edge exercised the 64-bit path";
 }
 
+// Every rectangle with corners from 2 pixels before to 2 pixels past the cell, pixel by pixel.
+TEST(CellRaster, RectMaskHoldsExactlyThePixelsInsideTheRectangle) {
+  const int cx = 16, cy = 40;
+  for (int x0 = cx - 2; x0 <= cx + 10; ++x0) {
+    for (int x1 = cx - 2; x1 <= cx + 10; ++x1) {
+      for (int y0 = cy - 2; y0 <= cy + 10; ++y0) {
+        for (int y1 = cy - 2; y1 <= cy + 10; ++y1) {
+          CellMask expected = 0;
+          for (int bit = 0; bit < kCellPixels; ++bit) {
+            const int x = cx + bit % kCellSizePx, y = cy + bit / kCellSizePx;
+            if (x >= x0 && x < x1 && y >= y0 && y < y1) expected |= CellMask{1} << bit;
+          }
+          ASSERT_EQ(cell_rect_mask(cx, cy, x0, y0, x1, y1), expected) << x0 << "," << y0 << " - " << x1 << "," << y1;
+        }
+      }
+    }
+  }
+}
+
 TEST(CellRaster, TopLeftRuleOnSharedEdgesCoversEachSampleOnce) {
   // A square from pixel centre (8.5, 8.5) to (40.5, 40.5) split on its diagonal: edges run
   // through pixel centres, so the top-left rule alone decides. Exactly the 32x32 pixels
@@ -196,7 +215,8 @@ TEST(CellRaster, DepthRangeMatchesTheScalarMinMaxOnEveryTarget) {
   for (const std::string& target : simd_targets()) {
     force_simd_target(target);
     for (int trial = 0; trial < 400; ++trial) {
-      const int count = 1 + trial % 64, rows = 1 + (trial / 7) % 8, stride = 70;
+      // A third of the trials whole cell rows (8 floats, the single-sample fast path).
+      const int count = trial % 3 == 0 ? kCellSizePx : 1 + trial % 64, rows = 1 + (trial / 7) % 8, stride = 70;
       std::vector<float> plane(static_cast<size_t>(stride) * rows);
       for (float& v : plane) v = unit(rng);
       if (trial % 5 == 1) plane[static_cast<size_t>(rng() % rows) * stride + rng() % count] = NAN;

@@ -73,15 +73,21 @@ void ShadowBatchKernel(const ShadowLookup& s, const float* x, const float* y, co
       rows[d] = hn::Mul(hn::Min(hn::Max(hn::Add(cy, hn::Set(di, d - 1)), zero_i), last_y), width_i);
     }
     auto lit = hn::Zero(df);
+    auto changes = zero_i, previous = zero_i;
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) {
+        const int tap = r * 3 + c;
         const auto texel = hn::Add(rows[r], xs[c]);
         const auto depth = hn::GatherIndex(df, texels, hn::Mul(texel, stride));
         lit = hn::Add(lit, hn::IfThenElseZero(hn::Le(pz, depth), one));
-        hn::StoreU(hn::BitCast(di, hn::ShiftRight<6>(hn::BitCast(hn::RebindToUnsigned<DF>(), hn::Mul(texel, bytes_per_texel)))),
-                   di, reinterpret_cast<int32_t*>(out.granule_offset[r * 3 + c]) + f);
+        const auto granule =
+            hn::BitCast(di, hn::ShiftRight<6>(hn::BitCast(hn::RebindToUnsigned<DF>(), hn::Mul(texel, bytes_per_texel))));
+        hn::StoreU(granule, di, reinterpret_cast<int32_t*>(out.granule_offset[tap]) + f);
+        if (tap > 0) changes = hn::Or(changes, hn::IfThenElseZero(hn::Ne(granule, previous), hn::Set(di, 1 << (tap - 1))));
+        previous = granule;
       }
     }
+    hn::StoreU(changes, di, out.tap_changes + f);
     const auto visibility = hn::Sub(one, hn::Mul(strength, hn::Sub(one, hn::Div(lit, nine))));
     hn::StoreU(hn::IfThenElse(inside, visibility, one), df, out.visibility + f);
     hn::StoreU(hn::VecFromMask(di, hn::RebindMask(di, inside)), di, inside_out + f);
@@ -125,14 +131,17 @@ void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int
   uint64_t last = texel_trace_detail::last_granule;
   int kept = 0;
   const unsigned read = lanes & static_cast<unsigned>(batch.inside >> (q * kQuadLanes)) & 0xFu;
+  // Tap 0 is kept unless it repeats the trace's last granule; taps 1..8 where tap_changes says
+  // they differ from the tap before (the compaction of record_texel_address, precomputed).
   for (unsigned rest = read; rest != 0; rest &= rest - 1) {
     const int f = q * kQuadLanes + std::countr_zero(rest);
-    for (int t = 0; t < kShadowTaps; ++t) {
-      const uint64_t granule = base + batch.granule_offset[t][f];
-      granules[kept] = granule;
-      kept += granule != last;
-      last = granule;
+    const uint64_t first = base + batch.granule_offset[0][f];
+    granules[kept] = first;
+    kept += first != last;
+    for (uint32_t changes = static_cast<uint32_t>(batch.tap_changes[f]); changes != 0; changes &= changes - 1) {
+      granules[kept++] = base + batch.granule_offset[std::countr_zero(changes) + 1][f];
     }
+    last = base + batch.granule_offset[kShadowTaps - 1][f];
   }
   sink->insert(sink->end(), granules, granules + kept);
   texel_trace_detail::last_granule = last;

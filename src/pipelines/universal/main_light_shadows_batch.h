@@ -17,6 +17,8 @@ struct ShadowBatch {
   alignas(64) float visibility[kBatchFragments];
   // Tap t's 64-byte granule minus the granule of the map's texel (0, 0), per fragment.
   alignas(64) uint32_t granule_offset[kShadowTaps][kBatchFragments];
+  // Bit t - 1 (t = 1..8): tap t's granule differs from tap t - 1's, i.e. the trace keeps it.
+  alignas(64) int32_t tap_changes[kBatchFragments];
   uint64_t inside = 0;  // bit f: fragment f's point projects into the map (its taps are read)
 };
 

@@ -37,6 +37,29 @@ struct Surface {
   VF n[3], v[3], diffuse[3], specular[3];
 };
 
+// The lanes whose std::pow call can change their term; the others keep power +0. A lane whose
+// radiance x N.L is +0 in every channel adds +0 x (diffuse + specular x power) = +0 whatever the
+// power, as long as that sum is +0 or positive and finite for every power the lane could have:
+// diffuse and specular in [+0, 2^126) (sign bit clear, so their sum cannot overflow) and the
+// power in [0, 1], which pow(n_dot_h, shininess) is for n_dot_h in [0, 1] (never below 0 here;
+// NaN fails the test) and shininess = exp2(...) >= 0 or +inf (a NaN shininess skips nothing).
+// Lights out of range and shadowed fragments are such lanes.
+HWY_INLINE MF needs_power(DF df, const Surface& s, const VF radiance[3], VF n_dot_l, VF n_dot_h, float shininess) {
+  if (std::isnan(shininess)) return hn::FirstN(df, hn::Lanes(df));
+  const DI di;
+  const auto below_2_126 = hn::Set(di, 0x7E800000);  // bits of 2^126; negative floats compare below 0
+  const auto zero_bits = hn::Zero(di), minus_one = hn::Set(di, -1);
+  MF unlit = hn::Le(n_dot_h, hn::Set(df, 1.0f));
+  for (int c = 0; c < 3; ++c) {
+    const auto weight = hn::BitCast(di, hn::Mul(radiance[c], n_dot_l));
+    const auto diffuse = hn::BitCast(di, s.diffuse[c]), specular = hn::BitCast(di, s.specular[c]);
+    const auto ok = hn::And(hn::And(hn::Eq(weight, zero_bits), hn::And(hn::Gt(diffuse, minus_one), hn::Lt(diffuse, below_2_126))),
+                            hn::And(hn::Gt(specular, minus_one), hn::Lt(specular, below_2_126)));
+    unlit = hn::And(unlit, hn::RebindMask(df, ok));
+  }
+  return hn::Not(unlit);
+}
+
 // rgb += blinn_phong(...) for one vector of fragments; `lit`: the fragments that may be shaded
 // (the others add the term with a power of 0, as the scalar loop).
 HWY_INLINE void add_blinn_phong(DF df, const Surface& s, const VF l[3], const VF radiance[3], float shininess,
@@ -52,7 +75,7 @@ HWY_INLINE void add_blinn_phong(DF df, const Surface& s, const VF l[3], const VF
   const VF n_dot_h = hn::IfThenElseZero(has_length, hn::IfThenElse(hn::Lt(d, zero), zero, d));
   const MF facing = hn::Gt(n_dot_l, zero);
   VF power = zero;
-  const uint32_t shaded = mask_bits(df, hn::And(lit, facing));
+  const uint32_t shaded = mask_bits(df, hn::And(hn::And(lit, facing), needs_power(df, s, radiance, n_dot_l, n_dot_h, shininess)));
   if (shaded != 0) {
     alignas(64) float base[HWY_MAX_BYTES / sizeof(float)], raised[HWY_MAX_BYTES / sizeof(float)] = {};
     hn::Store(n_dot_h, df, base);

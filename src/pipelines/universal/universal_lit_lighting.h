@@ -2,7 +2,8 @@
 // (ambient, the main light, the additional lights): blinn_phong, range_attenuation and
 // spot_attenuation bit for bit (the same float operations in the same order, std::max, std::clamp
 // and glm::max as their comparisons, branches as selects), so the compiler can run them on SIMD
-// lanes; only std::pow stays one call per lit fragment and light.
+// lanes; only std::pow stays one call per lit fragment and light, skipped where its result
+// cannot change the bits (a light that does not reach the fragment).
 #pragma once
 #include <cstdint>
 

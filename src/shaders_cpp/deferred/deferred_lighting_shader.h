@@ -81,8 +81,7 @@ class DeferredLightingShader final : public FragmentShader {
       out.discard_mask |= active & ~near;
     };
     if constexpr (Source::kLoadsWholeBatches) {
-      alignas(64) float unused[kBatchFragments];
-      float* const depth[4] = {in.depth, unused, unused, unused};
+      float* const depth[4] = {in.depth, nullptr, nullptr, nullptr};
       source_.load_all(0, batch, depth);
       for (int k = 0; k < layout_.target_count(); ++k) {
         float* const target[4] = {in.targets[k][0], in.targets[k][1], in.targets[k][2], in.targets[k][3]};

@@ -2,6 +2,8 @@
 // layout's targets; with a light-accumulation layout (Unity's) it also writes ambient (GI) and
 // emission into the light target, output 0. Template flags: texture keywords and alpha test.
 #pragma once
+#include <algorithm>
+
 #include "shaders_cpp/deferred/gbuffer_layout.h"
 #include "shaders_cpp/lighting/pbr_material.h"
 
@@ -23,17 +25,45 @@ class GBufferShader final : public FragmentShader {
     alignas(64) BatchVec3 normal;
     shading_normals(batch, count, normal);
     const int first_target = layout_.light_in_gbuffer ? 1 : 0;
-    for (int f = 0; f < count; ++f) {
-      const GBufferSurface g{{s.base_color[0][f], s.base_color[1][f], s.base_color[2][f]}, s.metallic[f],
-                             s.roughness[f], batch_get3(normal, f)};
-      glm::vec4 targets[3];
-      encode_gbuffer(layout_, g, targets);
-      for (int k = 0; k < layout_.target_count(); ++k) out.set(first_target + k, f, targets[k]);
-      if (layout_.light_in_gbuffer) {
-        const BrdfInputs brdf = metallic_roughness_brdf(g.base_color, g.metallic, g.roughness);
-        const glm::vec3 emission(s.emission[0][f], s.emission[1][f], s.emission[2][f]);
-        out.set(0, f, glm::vec4(ambient_ * brdf.diffuse_color + emission, 1.0f));
+    // encode_gbuffer channel by channel (the same float operations per fragment).
+    const float* const base[3] = {s.base_color[0], s.base_color[1], s.base_color[2]};
+    BrdfBatch brdf;
+    if (layout_.has_specular || layout_.light_in_gbuffer) metallic_roughness_brdf(base, s.metallic, s.roughness, count, brdf);
+    const auto write = [count](float* target, const float* values) { std::copy_n(values, count, target); };
+    const auto fill_one = [count](float* target) { std::fill_n(target, count, 1.0f); };
+    float(*normal_target)[kBatchFragments];
+    if (layout_.has_specular) {
+      float(*diffuse)[kBatchFragments] = out.color[first_target];
+      float(*specular)[kBatchFragments] = out.color[first_target + 1];
+      for (int c = 0; c < 3; ++c) {
+        write(diffuse[c], brdf.diffuse_color[c]);
+        write(specular[c], brdf.f0[c]);
       }
+      fill_one(diffuse[3]);
+      for (int f = 0; f < count; ++f) specular[3][f] = 1.0f - s.roughness[f];
+      normal_target = out.color[first_target + 2];
+      fill_one(normal_target[3]);
+    } else {
+      // Metallic rides in the normal target's alpha (see encode_gbuffer).
+      float(*albedo)[kBatchFragments] = out.color[first_target];
+      for (int c = 0; c < 3; ++c) write(albedo[c], s.base_color[c]);
+      write(albedo[3], s.roughness);
+      normal_target = out.color[first_target + 1];
+      write(normal_target[3], s.metallic);
+    }
+    const bool signed_normals = gbuffer_detail::is_float_format(layout_.normal_format);
+    for (int c = 0; c < 3; ++c) {
+      if (signed_normals) {
+        write(normal_target[c], normal[c]);
+      } else {
+        for (int f = 0; f < count; ++f) normal_target[c][f] = normal[c][f] * 0.5f + 0.5f;
+      }
+    }
+    if (layout_.light_in_gbuffer) {
+      for (int c = 0; c < 3; ++c) {
+        for (int f = 0; f < count; ++f) out.color[0][c][f] = ambient_[c] * brdf.diffuse_color[c][f] + s.emission[c][f];
+      }
+      fill_one(out.color[0][3]);
     }
   }
 

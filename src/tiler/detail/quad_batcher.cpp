@@ -320,15 +320,23 @@ void QuadBatcher::write_back_single_sample() {
   const BatchOutput& out = *outputs_[0];
   const bool late_z = ctx.late_z;
   const bool late_depth_write = late_z && ctx.depth_write;
-  int full_quads = 0;
-  const auto store_full = [&] {
+  // A triangle's quads, written when the triangle ends (a later triangle of the batch may
+  // cover the same pixels): whole quads, and quads with some lanes written.
+  int full_quads = 0, partial_quads = 0;
+  int32_t partial_first_fragment[kBatchQuads];
+  uint32_t partial_pixel[kBatchQuads];
+  uint8_t partial_lanes[kBatchQuads];
+  const auto store_triangle = [&] {
     for (size_t k = 0; k < outputs.size(); ++k) {
       const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
                                         out.color[k][3]};
-      store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
-                       memory_->color_plane(outputs[k]));
+      glm::vec4* const plane = memory_->color_plane(outputs[k]);
+      if (full_quads) store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(), plane);
+      if (partial_quads) {
+        store_quads(channels, partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), plane);
+      }
     }
-    full_quads = 0;
+    full_quads = partial_quads = 0;
   };
   const int triangles = triangle_count_;
   for (int t = 0; t < triangles; ++t) {
@@ -361,17 +369,11 @@ void QuadBatcher::write_back_single_sample() {
         ++full_quads;
         continue;
       }
-      for (int lane = 0; lane < kQuadLanes; ++lane) {
-        if (!((lanes >> lane) & 1u)) continue;
-        const size_t i = pixel + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
-        const int f = first + lane;
-        for (size_t k = 0; k < outputs.size(); ++k) {
-          memory_->color_plane(outputs[k])[i] = {out.color[k][0][f], out.color[k][1][f],
-                                                 out.color[k][2][f], out.color[k][3][f]};
-        }
-      }
+      partial_first_fragment[partial_quads] = first;
+      partial_pixel[partial_quads] = static_cast<uint32_t>(pixel);
+      partial_lanes[partial_quads++] = lanes;
     }
-    if (full_quads) store_full();
+    if (full_quads || partial_quads) store_triangle();
   }
 }
 

@@ -44,6 +44,37 @@ void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_f
   }
 }
 
+// StoreFullQuadsKernel's transpose, each pixel stored only where its lane bit is set.
+void StoreQuadsKernel(const float* const channels[4], const int32_t* first_fragment,
+                      const uint32_t* pixel, const uint8_t* lanes, int quad_count, int row_pixels,
+                      glm::vec4* plane) {
+  float* const floats = reinterpret_cast<float*>(plane);
+  const size_t row_floats = 4 * static_cast<size_t>(row_pixels);
+  for (int q = 0; q < quad_count; ++q) {
+    const int32_t f = first_fragment[q];
+    float* const dst[4] = {floats + 4 * static_cast<size_t>(pixel[q]), floats + 4 * static_cast<size_t>(pixel[q]) + 4,
+                           floats + 4 * static_cast<size_t>(pixel[q]) + row_floats,
+                           floats + 4 * static_cast<size_t>(pixel[q]) + row_floats + 4};
+    const uint32_t mask = lanes[q];
+#if HWY_TARGET == HWY_SCALAR
+    for (int lane = 0; lane < 4; ++lane) {
+      if (!((mask >> lane) & 1u)) continue;
+      for (int c = 0; c < 4; ++c) dst[lane][c] = channels[c][f + lane];
+    }
+#else
+    const hn::Full128<float> d;
+    const auto r = hn::LoadU(d, channels[0] + f), g = hn::LoadU(d, channels[1] + f);
+    const auto b = hn::LoadU(d, channels[2] + f), a = hn::LoadU(d, channels[3] + f);
+    const auto rg_low = hn::InterleaveLower(d, r, g), ba_low = hn::InterleaveLower(d, b, a);
+    const auto rg_high = hn::InterleaveUpper(d, r, g), ba_high = hn::InterleaveUpper(d, b, a);
+    if (mask & 1u) hn::StoreU(hn::ConcatLowerLower(d, ba_low, rg_low), d, dst[0]);
+    if (mask & 2u) hn::StoreU(hn::ConcatUpperUpper(d, ba_low, rg_low), d, dst[1]);
+    if (mask & 4u) hn::StoreU(hn::ConcatLowerLower(d, ba_high, rg_high), d, dst[2]);
+    if (mask & 8u) hn::StoreU(hn::ConcatUpperUpper(d, ba_high, rg_high), d, dst[3]);
+#endif
+  }
+}
+
 void LoadFullQuadsKernel(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
                          float* const channels[4]) {
   const float* const floats = reinterpret_cast<const float*>(plane);
@@ -123,6 +154,7 @@ HWY_AFTER_NAMESPACE();
 namespace ontile {
 
 HWY_EXPORT(StoreFullQuadsKernel);
+HWY_EXPORT(StoreQuadsKernel);
 HWY_EXPORT(LoadFullQuadsKernel);
 HWY_EXPORT(FillPlaneKernel);
 HWY_EXPORT(FillDepthKernel);
@@ -137,6 +169,11 @@ void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value) {
 }
 void fill_depth(float* depth, size_t count, float value) {
   HWY_DYNAMIC_DISPATCH(FillDepthKernel)(depth, count, value);
+}
+
+void store_quads(const float* const channels[4], const int32_t* first_fragment, const uint32_t* pixel,
+                 const uint8_t* lanes, int quad_count, int row_pixels, glm::vec4* plane) {
+  HWY_DYNAMIC_DISPATCH(StoreQuadsKernel)(channels, first_fragment, pixel, lanes, quad_count, row_pixels, plane);
 }
 
 void store_full_quads(const float* const channels[4], const int32_t* first_fragment,

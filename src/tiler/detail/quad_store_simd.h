@@ -16,6 +16,11 @@ namespace ontile {
 void store_full_quads(const float* const channels[4], const int32_t* first_fragment,
                       const uint32_t* pixel, int quad_count, int row_pixels, glm::vec4* plane);
 
+// store_full_quads for quads whose lanes are not all written: pixel `lane` of quad i is stored
+// only where bit lane of lanes[i] is set.
+void store_quads(const float* const channels[4], const int32_t* first_fragment, const uint32_t* pixel,
+                 const uint8_t* lanes, int quad_count, int row_pixels, glm::vec4* plane);
+
 // The inverse: channels[c][4 i + lane] = channel c of plane pixel pixel[i] (+ 1, + row_pixels,
 // + row_pixels + 1 for lanes 1, 2, 3), for quads i < quad_count.
 void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,

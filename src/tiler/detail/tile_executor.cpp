@@ -5,8 +5,10 @@
 #include "tiler/detail/tile_executor.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <bit>
+#include <cstring>
 
 #include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
@@ -42,14 +44,23 @@ class TileFetch final : public FramebufferFetch {
     const size_t offsets[kQuadLanes] = {0, right, below, below + right};
     if (attachment == depth_index_) {
       const float* depth = memory_.depth_plane();
-      for (int q = 0; q < quad_count; ++q) {
-        const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
-        for (int lane = 0; lane < kQuadLanes; ++lane) channel[0][q * kQuadLanes + lane] = depth[i + offsets[lane]];
+      if (memory_.samples() == 1) {
+        // Each quad row is two adjacent floats of the plane.
+        for (int q = 0; q < quad_count; ++q) {
+          const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, 0);
+          std::memcpy(channel[0] + q * kQuadLanes, depth + i, 2 * sizeof(float));
+          std::memcpy(channel[0] + q * kQuadLanes + 2, depth + i + below, 2 * sizeof(float));
+        }
+      } else {
+        for (int q = 0; q < quad_count; ++q) {
+          const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
+          for (int lane = 0; lane < kQuadLanes; ++lane) channel[0][q * kQuadLanes + lane] = depth[i + offsets[lane]];
+        }
       }
       const int fragments = quad_count * kQuadLanes;
-      std::fill_n(channel[1], fragments, 0.0f);
-      std::fill_n(channel[2], fragments, 0.0f);
-      std::fill_n(channel[3], fragments, 1.0f);
+      if (channel[1]) std::fill_n(channel[1], fragments, 0.0f);
+      if (channel[2]) std::fill_n(channel[2], fragments, 0.0f);
+      if (channel[3]) std::fill_n(channel[3], fragments, 1.0f);
       return;
     }
     const glm::vec4* colour = memory_.color_plane(attachment);
@@ -96,14 +107,18 @@ inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
   return static_cast<uint32_t>(((m >> bit) & 3u) | (((m >> (bit + kCellSizePx)) & 3u) << 2));
 }
 
-// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s).
-inline QuadCoverage spread_lanes(uint32_t lanes, int s) {
-  QuadCoverage c = 0;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    if ((lanes >> lane) & 1u) c |= QuadCoverage{1} << (lane * kMaxSamples + s);
+// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s): a table
+// of the 16 lane patterns for sample 0, shifted to sample s.
+constexpr std::array<QuadCoverage, 16> kSpreadLanes = [] {
+  std::array<QuadCoverage, 16> table{};
+  for (uint32_t lanes = 0; lanes < 16; ++lanes) {
+    for (int lane = 0; lane < kQuadLanes; ++lane) {
+      if ((lanes >> lane) & 1u) table[lanes] |= QuadCoverage{1} << (lane * kMaxSamples);
+    }
   }
-  return c;
-}
+  return table;
+}();
+inline QuadCoverage spread_lanes(uint32_t lanes, int s) { return kSpreadLanes[lanes & 0xFu] << s; }
 
 // Scratch reused by every tile a thread runs (no allocation in the tile loop once warm).
 struct TileScratch {
@@ -149,6 +164,7 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
   const TileRect& rect = ctx.rect;
   const int samples = ctx.pattern.count;
   const TrianglePlanes planes(t);
+  const CellEdges edges(t);
   const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
   const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
   const int ci0 = (std::max(rect.x0, t.min_x) - cells.first_x) / kCellSizePx;
@@ -162,7 +178,7 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
       CellState& st = scratch.cells[cell];
       // Pixels of the cell inside both the tile and the triangle's bounding box.
       const CellMask valid = cell_rect_mask(cx, cy, std::max(rect.x0, t.min_x), std::max(rect.y0, t.min_y), x_end, y_end);
-      st.covered_any = cell_coverage(t, ctx.pattern, cx, cy, valid, st.covered);
+      st.covered_any = cell_coverage(edges, ctx.pattern, cx, cy, valid, st.covered);
       if (!st.covered_any) continue;
       scratch.touched.push_back(cell);
       ++counters.cells_rasterized;
