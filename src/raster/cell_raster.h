@@ -78,6 +78,7 @@ struct InterpolationInput {
   float inv_w[3];
   const float* vertex_varyings[3];  // varying_count floats per vertex, setup slot order
   int varying_count;
+  uint32_t varyings_written = ~uint32_t{0};  // bit k clear: varying k's output is left as it is
 };
 void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
                            float* varyings_out, int varyings_stride);

@@ -167,6 +167,7 @@ class QuadBatcher {
   const float* cell_depth_ = nullptr;
   bool opaque_writes_ = false;     // blending is a plain overwrite: outputs are quantised per batch
   bool across_triangles_ = false;  // the batch may take the next triangle's quads
+  uint32_t varyings_read_ = ~uint32_t{0};  // the functor's varyings_read(): only those interpolated
   QueuedQuad queue_[kBatchQuads];
   int queued_ = 0;
   int live_from_ = 0;  // queued quads from here on read their plane origins from cells_

@@ -96,7 +96,7 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
                               t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
                               {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
                               {t.varyings, t.varyings + n, t.varyings + 2 * n},
-                              n};
+                              n, varyings_read_};
   interpolate_whole_quads(in, QuadOrigins{quad_ox_, quad_oy_, quad_l1_, quad_l2_, quad_z_},
                           kBatchQuads, b.depth, &b.varyings[0][0], kBatchFragments);
   b.quad_count = kBatchQuads;
@@ -111,10 +111,12 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
+  out.output0_codes_of.reset();
   ctx.draw.fragment_shader->shade_batch(b, out);
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   for (int k = 0; k < b.color_output_count; ++k) {
     const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
+    if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
     quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                     kBatchFragments);
   }
