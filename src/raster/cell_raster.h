@@ -30,6 +30,13 @@ CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1, int y1
 CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]);
 
+// True when cell_coverage's per-cell trivial accept holds for all three edges of every cell
+// whose top-left pixel is (first_x + 8 i, first_y + 8 j), first_x <= first_x + 8 i <= last_x
+// and likewise in y: each edge's lowest value over that block of cells is >= 0, and an edge is
+// affine, so its lowest value over any one cell is too. cell_coverage then gives out[s] = valid
+// for every such cell (full-screen triangles: one test per tile instead of one per cell).
+bool cells_trivially_accepted(const TriangleSetup& t, int first_x, int first_y, int last_x, int last_y);
+
 // An affine function of the pixel position, v(x, y) = origin + dx * (x - cell_x0) +
 // dy * (y - cell_y0) with x, y at pixel-centre offsets, in float.
 struct CellPlane {

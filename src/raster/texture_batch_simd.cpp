@@ -36,7 +36,18 @@ void NearestClampedTexelsKernel(const float* coord, int count, int size, int32_t
   const auto limit = hn::Set(df, kMaxExactTexelCoord);
   const auto scale = hn::Set(df, static_cast<float>(size));
   const VI last = hn::Set(di, size - 1);
+  const auto zero = hn::Zero(df);
+  // A lane with 0 <= u * size < size <= 2^24 (finite, |u| < 2^24) passes every clamp below
+  // unchanged: its texel is floor(u * size) (render-target copies, full-screen passes).
+  const bool exact_range = size <= (1 << 24);
   for (size_t f = 0; f < static_cast<size_t>(count); f += hn::Lanes(df)) {
+    if (exact_range) {
+      const auto x = hn::Mul(hn::LoadU(df, coord + f), scale);
+      if (hn::AllTrue(df, hn::And(hn::Ge(x, zero), hn::Lt(x, scale)))) {
+        hn::StoreU(hn::ConvertTo(di, hn::Floor(x)), di, out + f);
+        continue;
+      }
+    }
     auto u = hn::LoadU(df, coord + f);
     u = hn::IfThenElseZero(hn::IsFinite(u), u);
     u = hn::IfThenElse(hn::Lt(hn::Abs(u), limit), u, hn::CopySign(limit, u));
@@ -71,11 +82,19 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
       }
     }
     const VI byte = hn::Set(di, 0xFF);
+    const bool all_active = count >= 64 ? active == ~uint64_t{0} : active == (uint64_t{1} << count) - 1;
     for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
-      const auto on = float_lanes_of(df, active, f);
       const VI p = hn::Load(di, packed + f);
       const VI bytes[4] = {hn::And(p, byte), hn::And(hn::ShiftRight<8>(p), byte),
                            hn::And(hn::ShiftRight<16>(p), byte), hn::And(hn::ShiftRight<24>(p), byte)};
+      if (all_active) {  // whole batches (copies): no lanes to keep
+        for (int c = 0; c < 4; ++c) {
+          const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
+          hn::StoreU(hn::GatherIndex(df, table, bytes[c]), df, colour[c] + f);
+        }
+        continue;
+      }
+      const auto on = float_lanes_of(df, active, f);
       for (int c = 0; c < 4; ++c) {
         const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
         const auto value = hn::GatherIndex(df, table, bytes[c]);

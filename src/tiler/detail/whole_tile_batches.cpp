@@ -15,7 +15,8 @@ namespace ontile {
 bool QuadBatcher::add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y,
                                  int cells_x) {
   const TriangleContext& ctx = *ctx_;
-  if (queued_ != 0 || ctx.pattern.count != 1 || ctx.late_z || ctx.per_sample || ctx.fragments ||
+  if (queued_ != 0 || ctx.pattern.count != 1 || !ctx.whole_quads_pass_as_covered() ||
+      ctx.per_sample || ctx.fragments ||
       !opaque_writes_ || !ctx.draw.fragment_shader || (rect.x0 | rect.y0 | rect.width | rect.height) & 1) {
     return false;
   }
@@ -121,8 +122,9 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
                     kBatchFragments);
   }
   counters_->fragments_shaded += kBatchFragments;
-  // A functor without may_discard() that discards anyway loses those lanes' writes, as in
-  // write_back_single_sample; whole quads are stored on SIMD lanes, the others lane by lane.
+  // Discarded lanes lose their writes, as in write_back_single_sample (a late-Z functor here has
+  // no depth test or write, so nothing else of a lane depends on it); whole quads are stored on
+  // SIMD lanes, the others lane by lane.
   int full_quads = kBatchQuads;
   if (out.discard_mask == 0) {
     counters_->samples_written += kBatchFragments;
