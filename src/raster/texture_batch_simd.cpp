@@ -82,22 +82,27 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
       }
     }
     const VI byte = hn::Set(di, 0xFF);
+    // UNORM channels by one division (the table's values, unorm8_decodes_by_division) rather
+    // than a gather per channel.
+    const float* unorm = unorm8_decodes_by_division() ? unorm8_decode_table().data() : nullptr;
+    const bool rgb_unorm = view.rgb_decode == unorm, alpha_unorm = view.alpha_decode == unorm;
+    const auto max_code = hn::Set(df, 255.0f);
+    const auto decode = [&](int c, VI code) {
+      if (c < 3 ? rgb_unorm : alpha_unorm) return hn::Div(hn::ConvertTo(df, code), max_code);
+      return hn::GatherIndex(df, c < 3 ? view.rgb_decode : view.alpha_decode, code);
+    };
     const bool all_active = count >= 64 ? active == ~uint64_t{0} : active == (uint64_t{1} << count) - 1;
     for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
       const VI p = hn::Load(di, packed + f);
       const VI bytes[4] = {hn::And(p, byte), hn::And(hn::ShiftRight<8>(p), byte),
                            hn::And(hn::ShiftRight<16>(p), byte), hn::And(hn::ShiftRight<24>(p), byte)};
       if (all_active) {  // whole batches (copies): no lanes to keep
-        for (int c = 0; c < 4; ++c) {
-          const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
-          hn::StoreU(hn::GatherIndex(df, table, bytes[c]), df, colour[c] + f);
-        }
+        for (int c = 0; c < 4; ++c) hn::StoreU(decode(c, bytes[c]), df, colour[c] + f);
         continue;
       }
       const auto on = float_lanes_of(df, active, f);
       for (int c = 0; c < 4; ++c) {
-        const float* table = c < 3 ? view.rgb_decode : view.alpha_decode;
-        const auto value = hn::GatherIndex(df, table, bytes[c]);
+        const auto value = decode(c, bytes[c]);
         hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
       }
     }

@@ -174,6 +174,12 @@ TEST(TextureBatch, CopyBatchesTraceAsSampleQuadAndReportTheirCodes) {
   }
 }
 
+// LoadTexelsKernel and the RGBA8 UNORM store check codes by one float division: it must give
+// the decode table's value for every code, or those kernels fall back to table gathers.
+TEST(TextureBatch, UnormCodesDecodeByOneDivision) {
+  EXPECT_TRUE(unorm8_decodes_by_division());
+}
+
 // BatchOutput::output0_codes_of lets the batcher skip quantising decoded RGBA8 codes into an
 // attachment of their format: quantize_pixels gives every code's value back, bit for bit.
 TEST(TextureBatch, QuantisingDecodedRgba8CodesGivesThemBack) {
