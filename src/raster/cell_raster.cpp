@@ -273,6 +273,19 @@ CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
   }
 }
 
+bool cells_trivially_accepted(const TriangleSetup& t, int first_x, int first_y, int last_x, int last_y) {
+  const int64_t px0 = int64_t{first_x} * kSubpixelScale, py0 = int64_t{first_y} * kSubpixelScale;
+  const int64_t span_x = int64_t{last_x - first_x} * kSubpixelScale + kCellSpanSubpx;
+  const int64_t span_y = int64_t{last_y - first_y} * kSubpixelScale + kCellSpanSubpx;
+  for (const EdgeFunction& e : t.edge) {
+    // cell_coverage's lo at the first cell, with the block's spans for the cell's.
+    const int64_t lo = e.at(px0, py0) + e.bias + std::min<int64_t>(e.a, 0) * span_x +
+                       std::min<int64_t>(e.b, 0) * span_y;
+    if (lo < 0) return false;
+  }
+  return true;
+}
+
 CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int cell_x0,
                        int cell_y0, CellMask valid, CellMask out[kMaxSamples]) {
   const auto nothing = [&] {

@@ -57,6 +57,13 @@ inline CellMask cell_coverage(const TriangleSetup& t, const SamplePattern& patte
   return cell_coverage(CellEdges(t), pattern, cell_x0, cell_y0, valid, out);
 }
 
+// True when cell_coverage's per-cell trivial accept holds for all three edges of every cell
+// whose top-left pixel is (first_x + 8 i, first_y + 8 j), first_x <= first_x + 8 i <= last_x
+// and likewise in y: each edge's lowest value over that block of cells is >= 0, and an edge is
+// affine, so its lowest value over any one cell is too. cell_coverage then gives out[s] = valid
+// for every such cell (full-screen triangles: one test per tile instead of one per cell).
+bool cells_trivially_accepted(const TriangleSetup& t, int first_x, int first_y, int last_x, int last_y);
+
 // An affine function of the pixel position, v(x, y) = origin + dx * (x - cell_x0) +
 // dy * (y - cell_y0) with x, y at pixel-centre offsets, in float.
 struct CellPlane {
@@ -105,6 +112,7 @@ struct InterpolationInput {
   float inv_w[3];
   const float* vertex_varyings[3];  // varying_count floats per vertex, setup slot order
   int varying_count;
+  uint32_t varyings_written = ~uint32_t{0};  // bit k clear: varying k's output is left as it is
 };
 void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
                            float* varyings_out, int varyings_stride);

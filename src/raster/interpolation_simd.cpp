@@ -74,6 +74,7 @@ void interpolate_varyings(const InterpolationInput& in, const float* w1, const f
   const hn::CappedTag<float, 4> d4;  // one quad
   const size_t n = hn::Lanes(d);
   for (int k = 0; k < in.varying_count; ++k) {
+    if (!((in.varyings_written >> k) & 1u)) continue;  // the functor does not read it
     const float v0 = in.vertex_varyings[0][k];
     const float d1 = in.vertex_varyings[1][k] - v0;
     const float d2 = in.vertex_varyings[2][k] - v0;

@@ -75,7 +75,18 @@ int EncodeQuantized8Kernel(const float* rgba, size_t src_row_floats, int pixels,
   const size_t blocks = n / 4;
   for (size_t o = 0; o < n; ++o) lane_order[o] = static_cast<int32_t>(4 * (o % blocks) + o / blocks);
   const auto permutation = hn::SetTableIndices(du, lane_order);
+  // UNORM: the candidate round(v * 255) clamped to a code, checked by one division (the
+  // table's value for every code: unorm8_decodes_by_division), no gathers. A value decoded from
+  // code c is within c * 2^-24 of c once multiplied, so its candidate is c.
+  const bool by_division = !srgb && unorm8_decodes_by_division();
+  const auto max_code = hn::Set(df, 255.0f);
   const auto code_of = [&](hn::Vec<decltype(df)> v, hn::Mask<decltype(df)>& ok) {
+    if (by_division) {
+      const auto code = hn::Min(hn::Max(hn::ConvertTo(di, hn::Round(hn::Mul(v, max_code))), hn::Zero(di)),
+                                hn::Set(di, 255));
+      ok = hn::And(ok, hn::Eq(hn::Div(hn::ConvertTo(df, code), max_code), v));
+      return hn::BitCast(du, code);
+    }
     const auto bucket = hn::Min(
         hn::ShiftRight<23 - Tables::kBucketMantissaBits>(hn::Sub(hn::BitCast(du, v), lowest)),
         last_bucket);

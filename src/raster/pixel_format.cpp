@@ -195,6 +195,17 @@ float unorm_to_float(uint32_t code, int bits) {
 
 const std::array<float, 256>& srgb8_decode_table() { return srgb8_tables().decode; }
 
+bool unorm8_decodes_by_division() {
+  static const bool exact = [] {
+    const std::array<float, 256>& table = unorm8_decode_table();
+    for (int c = 0; c < 256; ++c) {
+      if (static_cast<float>(c) / 255.0f != table[c]) return false;
+    }
+    return true;
+  }();
+  return exact;
+}
+
 const std::array<float, 256>& unorm8_decode_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};

@@ -71,6 +71,10 @@ float unorm_to_float(uint32_t code, int bits);
 // the input (NaN and values <= 0 -> 0, >= 1 -> 255).
 const std::array<float, 256>& srgb8_decode_table();
 const std::array<float, 256>& unorm8_decode_table();
+// True when float(c) / 255.0f (one IEEE float division) equals unorm8_decode_table()[c] (the
+// double quotient rounded to float) for every code: SIMD kernels then decode and check 8-bit
+// UNORM codes by a division instead of table gathers.
+bool unorm8_decodes_by_division();
 uint8_t linear_to_srgb8(float linear);
 
 // IEEE 754 binary16: round to nearest even, subnormals kept, overflow -> signed Inf (IEEE

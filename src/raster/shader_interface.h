@@ -4,9 +4,11 @@
 // calls) and may read their own pixel of input attachments (framebuffer fetch).
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
+#include "raster/pixel_format.h"
 #include "raster/raster_types.h"
 
 namespace ontile {
@@ -130,6 +132,11 @@ struct FragmentBatch {
 struct BatchOutput {
   alignas(64) float color[kMaxColorTargets][4][kBatchFragments];  // [target][channel][fragment]
   uint64_t discard_mask = 0;                                      // bit f: fragment f discarded
+  // Set by a functor when every value of output 0 (padding included) is a decoded code of this
+  // RGBA8 format (a nearest copy of its texels): quantising such values into an attachment of
+  // the same format gives each back unchanged (PixelRows test), so the batcher skips it. The
+  // batcher clears it before every call.
+  std::optional<PixelFormat> output0_codes_of;
 
   void discard(int f) { discard_mask |= uint64_t{1} << f; }
   bool discarded(int f) const { return (discard_mask >> f) & 1u; }
@@ -164,6 +171,9 @@ class FragmentShader {
   // texel of quad q before any texel of quad q + 1, so the texel trace is the same whatever
   // the batch boundaries. Batches then hold up to kBatchQuads quads instead of one triangle's.
   virtual bool batches_across_triangles() const { return false; }
+  // Bit k set when shade_batch (and shade, through it) reads varying k of its batches; the
+  // raster core may leave the others unwritten (full-screen passes read 2 of 5, or none).
+  virtual uint32_t varyings_read() const { return ~uint32_t{0}; }
 };
 
 }  // namespace ontile

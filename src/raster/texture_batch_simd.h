@@ -3,6 +3,7 @@
 // clamp-to-edge texel coordinates as Texture2D's sampler computes them, and texel loads.
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
@@ -27,7 +28,10 @@ void load_texels(const Texture2D::TexelView& view, const int32_t* x, const int32
 // are sampled, helper lanes included, and traced in that order exactly as sample_quad traces
 // them; out[c][f] is written up to the padded count (padding repeats the last fragment's uv).
 // Returns false, reading and tracing nothing, for any other sampler.
+// When it returns true and the texels are RGBA8 codes (UNORM, or sRGB colour with UNORM alpha,
+// decoded by pixel_format.h's tables), *codes_of (if given) is set to that format, else nullopt.
 bool sample_batch_nearest(const Texture2D& texture, const SamplerDesc& sampler, const float* u,
-                          const float* v, int fragment_count, float (&out)[4][kBatchFragments]);
+                          const float* v, int fragment_count, float (&out)[4][kBatchFragments],
+                          std::optional<PixelFormat>* codes_of = nullptr);
 
 }  // namespace ontile

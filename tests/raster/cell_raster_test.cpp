@@ -79,6 +79,45 @@ void expect_cells_match(double extent_px, int count, uint32_t seed, int* int64_c
 TEST(CellRaster, CoverageEqualsTheScalarWalkerForSmallTriangles) { expect_cells_match(6.0, 300, 1); }
 TEST(CellRaster, CoverageEqualsTheScalarWalkerForMediumTriangles) { expect_cells_match(60.0, 200, 2); }
 
+// cells_trivially_accepted (the tile executor's one test per tile): whenever it accepts a block
+// of cells, cell_coverage gives every cell of the block its valid mask at every sample count.
+// Large triangles, so many blocks are accepted and many only just miss.
+TEST(CellRaster, TriviallyAcceptedBlocksAreCoveredWhole) {
+  std::mt19937 rng(1212);
+  std::uniform_real_distribution<double> centre_x(0.0, kWidth), centre_y(0.0, kHeight);
+  std::uniform_real_distribution<double> offset(-400.0, 400.0), w(0.5, 3.0);
+  int accepted = 0, rejected = 0;
+  for (int i = 0; i < 300; ++i) {
+    glm::vec4 clip[3];
+    const double x = centre_x(rng), y = centre_y(rng);
+    for (auto& c : clip) c = clip_of_pixel(x + offset(rng), y + offset(rng), w(rng));
+    TriangleSetup t;
+    if (setup_triangle(clip, kWidth, kHeight, CullMode::None, FrontFace::CounterClockwise, t) != SetupResult::Ok) continue;
+    for (int block = 0; block < 20; ++block) {
+      const int ci0 = static_cast<int>(rng() % (kWidth / kCellSizePx)), cj0 = static_cast<int>(rng() % (kHeight / kCellSizePx));
+      const int ci1 = ci0 + static_cast<int>(rng() % 4), cj1 = cj0 + static_cast<int>(rng() % 4);
+      if (!cells_trivially_accepted(t, ci0 * kCellSizePx, cj0 * kCellSizePx, ci1 * kCellSizePx, cj1 * kCellSizePx)) {
+        ++rejected;
+        continue;
+      }
+      ++accepted;
+      for (int samples : {1, 4}) {
+        const SamplePattern& p = *standard_sample_pattern(samples);
+        for (int cj = cj0; cj <= cj1; ++cj) {
+          for (int ci = ci0; ci <= ci1; ++ci) {
+            const CellMask valid = rng() % 2 ? ~CellMask{0} : CellMask{rng()} << 20 | rng();
+            CellMask out[kMaxSamples];
+            ASSERT_EQ(cell_coverage(t, p, ci * kCellSizePx, cj * kCellSizePx, valid, out), valid);
+            for (int s = 0; s < samples; ++s) ASSERT_EQ(out[s], valid);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 100);
+}
+
 TEST(CellRaster, SteepEdgesUseTheInt64PathAndStayExact) {
   int steep_edges = 0;
   expect_cells_match(20000.0, 60, 3, &steep_edges);

@@ -12,6 +12,9 @@
 namespace ontile {
 namespace {
 
+// The full-screen triangle's uv, the only varyings the blit functors read.
+constexpr uint32_t kUvVaryings = 3u << FullScreenVertexShader::kUv;
+
 std::shared_ptr<const Texture2D> main_texture(const DrawContext& ctx, SamplerDesc& sampler) {
   auto texture = ctx.texture("_MainTex", &sampler);
   if (!texture) throw Error("material '" + ctx.material->name + "': blit pass without _MainTex");
@@ -25,11 +28,12 @@ class CopyShader final : public FragmentShader {
   CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
       : source_(std::move(source)), sampler_(sampler) {}
   bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
+  uint32_t varyings_read() const override { return kUvVaryings; }
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
     if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
                              batch.varyings[FullScreenVertexShader::kUv + 1],
-                             batch.fragment_count(), out.color[0])) {
+                             batch.fragment_count(), out.color[0], &out.output0_codes_of)) {
       return;
     }
     for (int q = 0; q < batch.quad_count; ++q) {
@@ -52,6 +56,7 @@ class TonemapShader final : public FragmentShader {
   TonemapShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler, float exposure)
       : source_(std::move(source)), sampler_(sampler), exposure_(exposure) {}
   bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
+  uint32_t varyings_read() const override { return kUvVaryings; }
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Nearest 1:1 reads of the whole batch on SIMD lanes (the same texels and trace as
     // sample_quad), then the tone curve on lanes with the scalar curve's operations.

@@ -56,6 +56,7 @@ class DeferredLightingShader final : public FragmentShader {
       : source_(source), layout_(layout), lighting_(lighting),
         view_{inverse_view_projection, camera_position, width_px, height_px} {}
   bool may_discard() const override { return true; }
+  uint32_t varyings_read() const override { return 0; }  // pixel coordinates only
 
   // Reads (depth, then the targets, fragment by fragment: the texel trace order of the classic
   // variant), then the decoding and the lights over the batch on SIMD lanes.
@@ -152,6 +153,7 @@ class TonemapLightShader final : public FragmentShader {
  public:
   explicit TonemapLightShader(Source source) : source_(source) {}
   bool per_sample_shading() const override { return true; }
+  uint32_t varyings_read() const override { return 0; }  // pixel coordinates only
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     for (int f = 0; f < batch.fragment_count(); ++f) {
       if (!batch.active(f)) continue;

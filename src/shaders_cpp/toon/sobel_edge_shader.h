@@ -8,6 +8,7 @@
 
 #include "raster/shader_interface.h"
 #include "raster/texture.h"
+#include "shaders_cpp/full_screen.h"
 #include "shaders_cpp/toon/sobel_edge_kernel.h"
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
 #include "shaders_cpp/toon/toon_outputs.h"
@@ -101,6 +102,7 @@ class SobelEdgeShader final : public FragmentShader {
   // differs from the depth texture's, or an invalid depth linearization.
   explicit SobelEdgeShader(const SobelEdgeParams& params);
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
+  uint32_t varyings_read() const override { return 3u << FullScreenVertexShader::kUv; }  // uv
 
   // The output colour at one uv (what shade_batch() writes for a fragment), with the same texel
   // trace.

@@ -67,6 +67,7 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
     counters_ = &counters;
     cells_ = cells;
     cell_depth_ = cell_depth;
+    varyings_read_ = ctx.draw.fragment_shader ? ctx.draw.fragment_shader->varyings_read() : ~uint32_t{0};
     opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
     across_triangles_ = batches_across_triangles_enabled.load(std::memory_order_relaxed) &&
                         ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
@@ -193,7 +194,7 @@ void QuadBatcher::shade_invocation(int inv) {
                           t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
                           {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
                           {t.varyings, t.varyings + n, t.varyings + 2 * n},
-                          n};
+                          n, varyings_read_};
     interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
   }
   b.varying_count = ctx.varying_count;
@@ -208,12 +209,14 @@ void QuadBatcher::shade_invocation(int inv) {
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
+  out.output0_codes_of.reset();
   ctx.draw.fragment_shader->shade_batch(b, out);
   // Opaque writes do not depend on the destination: quantise the whole batch per output in one
   // pass (the same values write_back would compute one by one).
   if (opaque_writes_) {
     for (int k = 0; k < b.color_output_count; ++k) {
       const PixelFormat format = ctx.pass.attachments[ctx.subpass.color_outputs[k]].format;
+      if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
       // The padded count keeps every SIMD vector whole; padding lanes are never written back.
       quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                       padded);

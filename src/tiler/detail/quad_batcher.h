@@ -69,6 +69,9 @@ struct TriangleContext {
                   const FramebufferFetch* fetch, uint32_t triangle_ref,
                   std::vector<FragmentAccess>* fragments);
   float quantize_depth(double z) const;
+  // Early Z, or late Z with neither a depth test nor a depth write (deferred lighting, which
+  // may discard): a covered quad's lanes then all pass unless the functor discards them.
+  bool whole_quads_pass_as_covered() const { return !late_z || (!depth_test && !depth_write); }
 };
 
 // Per-cell results of coverage and early depth for the current triangle.
@@ -133,11 +136,12 @@ class QuadBatcher {
   }
   // The whole-tile path (full-screen triangles; whole_tile_batches.cpp): called right after
   // begin() for a triangle that covers every pixel of `rect` (even origin and size) at one
-  // sample, every pixel having passed early depth. Shades and writes the rect's quads in the
+  // sample, every pixel having passed early depth (or facing no depth test or write after
+  // shading: whole_quads_pass_as_covered). Shades and writes the rect's quads in the
   // tile's row-major order kBatchQuads at a time, the batches add() per quad would form, without
   // queueing them, and queues the last partial batch with add(). Returns false, doing nothing,
   // unless the batch is empty and the draw shades one opaque invocation per pixel with early
-  // depth and no fragment recording. The cells grid: cell (i, j) has its top-left pixel at
+  // depth (or whole_quads_pass_as_covered) and no fragment recording. The cells grid: cell (i, j) has its top-left pixel at
   // (first_cell_x + 8 i, first_cell_y + 8 j), index j * cells_x + i in cells_.
   bool add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y, int cells_x);
   // Ends a triangle: its quads stay queued only if the next triangle may join them, and then
@@ -167,6 +171,7 @@ class QuadBatcher {
   const float* cell_depth_ = nullptr;
   bool opaque_writes_ = false;     // blending is a plain overwrite: outputs are quantised per batch
   bool across_triangles_ = false;  // the batch may take the next triangle's quads
+  uint32_t varyings_read_ = ~uint32_t{0};  // the functor's varyings_read(): only those interpolated
   QueuedQuad queue_[kBatchQuads];
   int queued_ = 0;
   int live_from_ = 0;  // queued quads from here on read their plane origins from cells_

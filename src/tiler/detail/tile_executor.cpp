@@ -171,14 +171,28 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
   const int cj0 = (std::max(rect.y0, t.min_y) - cells.first_y) / kCellSizePx;
   const int ci1 = (x_end - 1 - cells.first_x) / kCellSizePx;
   const int cj1 = (y_end - 1 - cells.first_y) / kCellSizePx;
+  const int x_begin = std::max(rect.x0, t.min_x), y_begin = std::max(rect.y0, t.min_y);
+  // Every cell inside all three edges (full-screen triangles): its coverage is its valid mask.
+  const bool all_inside =
+      ci0 <= ci1 && cj0 <= cj1 &&
+      cells_trivially_accepted(t, cells.first_x + ci0 * kCellSizePx, cells.first_y + cj0 * kCellSizePx,
+                               cells.first_x + ci1 * kCellSizePx, cells.first_y + cj1 * kCellSizePx);
   for (int cj = cj0; cj <= cj1; ++cj) {
     for (int ci = ci0; ci <= ci1; ++ci) {
       const int cell = cj * cells.cells_x + ci;
       const int cx = cells.first_x + ci * kCellSizePx, cy = cells.first_y + cj * kCellSizePx;
       CellState& st = scratch.cells[cell];
-      // Pixels of the cell inside both the tile and the triangle's bounding box.
-      const CellMask valid = cell_rect_mask(cx, cy, std::max(rect.x0, t.min_x), std::max(rect.y0, t.min_y), x_end, y_end);
-      st.covered_any = cell_coverage(edges, ctx.pattern, cx, cy, valid, st.covered);
+      // Pixels of the cell inside both the tile and the triangle's bounding box (all of them
+      // for a cell inside both, what cell_rect_mask gives).
+      const bool whole_cell = cx >= x_begin && cy >= y_begin && cx + kCellSizePx <= x_end &&
+                              cy + kCellSizePx <= y_end;
+      const CellMask valid = whole_cell ? ~CellMask{0} : cell_rect_mask(cx, cy, x_begin, y_begin, x_end, y_end);
+      if (all_inside) {
+        for (int s = 0; s < samples; ++s) st.covered[s] = valid;
+        st.covered_any = valid;
+      } else {
+        st.covered_any = cell_coverage(edges, ctx.pattern, cx, cy, valid, st.covered);
+      }
       if (!st.covered_any) continue;
       scratch.touched.push_back(cell);
       ++counters.cells_rasterized;
@@ -265,12 +279,12 @@ void count_unshaded_cells(const TriangleContext& ctx, const TileScratch& scratch
 }
 
 // True when the triangle covers every pixel of the tile at one sample and every pixel passed
-// early depth (full-screen triangles): every cell of the tile was visited for this triangle
+// early depth, or has no depth test or write to come (full-screen triangles): every cell of the tile was visited for this triangle
 // (the others hold an earlier triangle's state) and is covered and passing inside the tile.
 bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
                        const TileScratch& scratch) {
   const TileRect& rect = ctx.rect;
-  if (ctx.pattern.count != 1 || ctx.late_z ||
+  if (ctx.pattern.count != 1 || !ctx.whole_quads_pass_as_covered() ||
       scratch.touched.size() != static_cast<size_t>(cells.count())) {
     return false;
   }

@@ -15,7 +15,8 @@ namespace ontile {
 bool QuadBatcher::add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y,
                                  int cells_x) {
   const TriangleContext& ctx = *ctx_;
-  if (queued_ != 0 || ctx.pattern.count != 1 || ctx.late_z || ctx.per_sample || ctx.fragments ||
+  if (queued_ != 0 || ctx.pattern.count != 1 || !ctx.whole_quads_pass_as_covered() ||
+      ctx.per_sample || ctx.fragments ||
       !opaque_writes_ || !ctx.draw.fragment_shader || (rect.x0 | rect.y0 | rect.width | rect.height) & 1) {
     return false;
   }
@@ -96,7 +97,7 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
                               t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
                               {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
                               {t.varyings, t.varyings + n, t.varyings + 2 * n},
-                              n};
+                              n, varyings_read_};
   interpolate_whole_quads(in, QuadOrigins{quad_ox_, quad_oy_, quad_l1_, quad_l2_, quad_z_},
                           kBatchQuads, b.depth, &b.varyings[0][0], kBatchFragments);
   b.quad_count = kBatchQuads;
@@ -111,16 +112,19 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
+  out.output0_codes_of.reset();
   ctx.draw.fragment_shader->shade_batch(b, out);
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   for (int k = 0; k < b.color_output_count; ++k) {
     const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
+    if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
     quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                     kBatchFragments);
   }
   counters_->fragments_shaded += kBatchFragments;
-  // A functor without may_discard() that discards anyway loses those lanes' writes, as in
-  // write_back_single_sample; whole quads are stored on SIMD lanes, the others lane by lane.
+  // Discarded lanes lose their writes, as in write_back_single_sample (a late-Z functor here has
+  // no depth test or write, so nothing else of a lane depends on it); whole quads are stored on
+  // SIMD lanes, the others lane by lane.
   int full_quads = kBatchQuads;
   if (out.discard_mask == 0) {
     counters_->samples_written += kBatchFragments;
