@@ -13,6 +13,29 @@ namespace ontile {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// Quad lanes f .. f + 3 of R, G, B, A as the four RGBA pixels top, top + 4 (floats), bottom and
+// bottom + 4, each stored where its bit of `mask` is set: a 4x4 transpose on 128-bit lanes.
+HWY_INLINE void store_quad_pixels(const float* const channels[4], int32_t f, float* top, float* bottom,
+                                  uint32_t mask) {
+  float* const dst[4] = {top, top + 4, bottom, bottom + 4};
+#if HWY_TARGET == HWY_SCALAR
+  for (int lane = 0; lane < 4; ++lane) {
+    if (!((mask >> lane) & 1u)) continue;
+    for (int c = 0; c < 4; ++c) dst[lane][c] = channels[c][f + lane];
+  }
+#else
+  const hn::Full128<float> d;
+  const auto r = hn::LoadU(d, channels[0] + f), g = hn::LoadU(d, channels[1] + f);
+  const auto b = hn::LoadU(d, channels[2] + f), a = hn::LoadU(d, channels[3] + f);
+  const auto rg_low = hn::InterleaveLower(d, r, g), ba_low = hn::InterleaveLower(d, b, a);
+  const auto rg_high = hn::InterleaveUpper(d, r, g), ba_high = hn::InterleaveUpper(d, b, a);
+  if (mask & 1u) hn::StoreU(hn::ConcatLowerLower(d, ba_low, rg_low), d, dst[0]);
+  if (mask & 2u) hn::StoreU(hn::ConcatUpperUpper(d, ba_low, rg_low), d, dst[1]);
+  if (mask & 4u) hn::StoreU(hn::ConcatLowerLower(d, ba_high, rg_high), d, dst[2]);
+  if (mask & 8u) hn::StoreU(hn::ConcatUpperUpper(d, ba_high, rg_high), d, dst[3]);
+#endif
+}
+
 void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_fragment,
                           const uint32_t* pixel, int quad_count, int row_pixels,
                           glm::vec4* plane) {
@@ -21,57 +44,20 @@ void StoreFullQuadsKernel(const float* const channels[4], const int32_t* first_f
   float* const floats = reinterpret_cast<float*>(plane);
   const size_t row_floats = 4 * static_cast<size_t>(row_pixels);
   for (int q = 0; q < quad_count; ++q) {
-    const int32_t f = first_fragment[q];
     float* top = floats + 4 * static_cast<size_t>(pixel[q]);
-    float* bottom = top + row_floats;
-#if HWY_TARGET == HWY_SCALAR
-    for (int lane = 0; lane < 4; ++lane) {
-      float* dst = (lane < 2 ? top : bottom) + 4 * (lane & 1);
-      for (int c = 0; c < 4; ++c) dst[c] = channels[c][f + lane];
-    }
-#else
-    // A 4x4 transpose of the quad's four lanes of R, G, B, A into four RGBA pixels.
-    const hn::Full128<float> d;
-    const auto r = hn::LoadU(d, channels[0] + f), g = hn::LoadU(d, channels[1] + f);
-    const auto b = hn::LoadU(d, channels[2] + f), a = hn::LoadU(d, channels[3] + f);
-    const auto rg_low = hn::InterleaveLower(d, r, g), ba_low = hn::InterleaveLower(d, b, a);
-    const auto rg_high = hn::InterleaveUpper(d, r, g), ba_high = hn::InterleaveUpper(d, b, a);
-    hn::StoreU(hn::ConcatLowerLower(d, ba_low, rg_low), d, top);
-    hn::StoreU(hn::ConcatUpperUpper(d, ba_low, rg_low), d, top + 4);
-    hn::StoreU(hn::ConcatLowerLower(d, ba_high, rg_high), d, bottom);
-    hn::StoreU(hn::ConcatUpperUpper(d, ba_high, rg_high), d, bottom + 4);
-#endif
+    store_quad_pixels(channels, first_fragment[q], top, top + row_floats, 0xFu);
   }
 }
 
-// StoreFullQuadsKernel's transpose, each pixel stored only where its lane bit is set.
+// StoreFullQuadsKernel with each pixel stored only where its lane bit is set.
 void StoreQuadsKernel(const float* const channels[4], const int32_t* first_fragment,
                       const uint32_t* pixel, const uint8_t* lanes, int quad_count, int row_pixels,
                       glm::vec4* plane) {
   float* const floats = reinterpret_cast<float*>(plane);
   const size_t row_floats = 4 * static_cast<size_t>(row_pixels);
   for (int q = 0; q < quad_count; ++q) {
-    const int32_t f = first_fragment[q];
-    float* const dst[4] = {floats + 4 * static_cast<size_t>(pixel[q]), floats + 4 * static_cast<size_t>(pixel[q]) + 4,
-                           floats + 4 * static_cast<size_t>(pixel[q]) + row_floats,
-                           floats + 4 * static_cast<size_t>(pixel[q]) + row_floats + 4};
-    const uint32_t mask = lanes[q];
-#if HWY_TARGET == HWY_SCALAR
-    for (int lane = 0; lane < 4; ++lane) {
-      if (!((mask >> lane) & 1u)) continue;
-      for (int c = 0; c < 4; ++c) dst[lane][c] = channels[c][f + lane];
-    }
-#else
-    const hn::Full128<float> d;
-    const auto r = hn::LoadU(d, channels[0] + f), g = hn::LoadU(d, channels[1] + f);
-    const auto b = hn::LoadU(d, channels[2] + f), a = hn::LoadU(d, channels[3] + f);
-    const auto rg_low = hn::InterleaveLower(d, r, g), ba_low = hn::InterleaveLower(d, b, a);
-    const auto rg_high = hn::InterleaveUpper(d, r, g), ba_high = hn::InterleaveUpper(d, b, a);
-    if (mask & 1u) hn::StoreU(hn::ConcatLowerLower(d, ba_low, rg_low), d, dst[0]);
-    if (mask & 2u) hn::StoreU(hn::ConcatUpperUpper(d, ba_low, rg_low), d, dst[1]);
-    if (mask & 4u) hn::StoreU(hn::ConcatLowerLower(d, ba_high, rg_high), d, dst[2]);
-    if (mask & 8u) hn::StoreU(hn::ConcatUpperUpper(d, ba_high, rg_high), d, dst[3]);
-#endif
+    float* top = floats + 4 * static_cast<size_t>(pixel[q]);
+    store_quad_pixels(channels, first_fragment[q], top, top + row_floats, lanes[q]);
   }
 }
 
