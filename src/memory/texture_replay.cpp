@@ -1,8 +1,7 @@
 // The replay of a pass's texture traces through the texture-cache model (texture_cache.h), with
 // the counts of a serial per-access replay in tile-index order at any thread count.
 //
-// Serial (TextureReplayStream, texture_replay_stream.h): one pass over the tiles while they are
-// recorded, regions placed as they are met (first-use order).
+// Serial: one pass over the tiles, regions placed as they are met (first-use order).
 // Parallel: a set's hits and misses depend only on the order of its own accesses, so the sets are
 // split into G = 2^b groups, replayed by different threads, each seeing its accesses in tile
 // order. The group of a granule is the low b bits of its line, which are also bits of its set
@@ -26,7 +25,6 @@
 #include "memory/texture_cache.h"
 #include "memory/texture_replay_kernel.h"
 #include "memory/texture_replay_observer.h"
-#include "memory/texture_replay_stream.h"
 #include "util/parallel_for.h"
 
 namespace ontile {
@@ -52,6 +50,21 @@ TextureTraffic traffic_of(uint64_t accesses, uint64_t misses, const TextureCache
   traffic.misses = misses;
   traffic.bytes_read = misses * cache.config().line_bytes;
   return traffic;
+}
+
+TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces,
+                             TextureReplayDetail& detail) {
+  RegionTable regions(place_region, &cache);
+  uint64_t accesses = 0, misses = 0;
+  for (size_t t = 0; t < traces.size(); ++t) {
+    const std::span<const uint64_t> granules = traces[t].texture_granules.granules();
+    accesses += granules.size();
+    const uint64_t tile_misses = replay_granules(cache.sets(), regions, granules.data(), granules.size());
+    detail.misses_per_tile[t] = tile_misses;
+    misses += tile_misses;
+  }
+  regions.add_misses_to(detail.misses_per_region);
+  return traffic_of(accesses, misses, cache);
 }
 
 // Splitting the granules by group costs several times what replaying them costs (callgrind,
@@ -195,71 +208,21 @@ void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
   observer.store(replay_observer);
 }
 
-TextureReplayStream::TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
-                                         TextureReplayDetail& detail)
-    : cache_(cache),
-      traces_(traces),
-      detail_(detail),
-      observer_(observer.load()),
-      streamed_(group_bits_for(cache.sets(), std::max(1, tbb::this_task_arena::max_concurrency())) == 0),
-      threads_(std::max(1, tbb::this_task_arena::max_concurrency())),
-      recorded_(new std::atomic<bool>[traces.size()]),
-      regions_(place_region, &cache) {
-  for (size_t t = 0; t < traces.size(); ++t) recorded_[t].store(false, std::memory_order_relaxed);
-  detail_.misses_per_tile.assign(traces.size(), 0);
-  detail_.misses_per_region.clear();
-  if (observer_ != nullptr) observer_->before_replay(cache_);
-}
-
-TextureReplayStream::~TextureReplayStream() = default;
-
-void TextureReplayStream::replay_tile(size_t tile) {
-  const std::span<const uint64_t> granules = traces_[tile].texture_granules.granules();
-  accesses_ += granules.size();
-  const uint64_t tile_misses = replay_granules(cache_.sets(), regions_, granules.data(), granules.size());
-  detail_.misses_per_tile[tile] = tile_misses;
-  misses_ += tile_misses;
-}
-
-void TextureReplayStream::tile_recorded(size_t tile, const std::vector<uint64_t>& thread_buffer) {
-  recorded_[tile].store(true, std::memory_order_release);
-  if (!streamed_) return;
-  // Tile t is ours to replay now if it and every tile before it are replayed or recorded, and its
-  // granules are in this thread's buffer or it has none (its range is read, never its buffer).
-  const auto replayable = [&](size_t t) {
-    if (t == traces_.size() || !recorded_[t].load(std::memory_order_acquire)) return false;
-    const GranuleRange& range = traces_[t].texture_granules;
-    return range.buffer == &thread_buffer || range.begin == range.end;
-  };
-  while (!replaying_.exchange(true, std::memory_order_acquire)) {
-    size_t next = next_tile_;
-    while (replayable(next)) replay_tile(next++);
-    next_tile_ = next;
-    replaying_.store(false, std::memory_order_release);
-    // A tile of ours recorded meanwhile found the flag taken and left its replay to us.
-    if (!replayable(next)) return;
-  }
-}
-
-TextureTraffic TextureReplayStream::finish() {
-  TextureTraffic traffic;
-  if (streamed_) {
-    for (size_t t = next_tile_; t < traces_.size(); ++t) replay_tile(t);
-    next_tile_ = traces_.size();
-    regions_.add_misses_to(detail_.misses_per_region);
-    traffic = traffic_of(accesses_, misses_, cache_);
-  } else {
-    traffic = replay_parallel(cache_, traces_, threads_, group_bits_for(cache_.sets(), threads_), detail_);
-  }
-  if (observer_ != nullptr) observer_->after_replay(cache_, traces_, traffic);
-  return traffic;
-}
-
 TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces,
                                      TextureReplayDetail* detail) {
   TextureReplayDetail local_detail;
-  TextureReplayStream stream(cache, traces, detail ? *detail : local_detail);
-  return stream.finish();
+  TextureReplayDetail& out = detail ? *detail : local_detail;
+  out.misses_per_tile.assign(traces.size(), 0);
+  out.misses_per_region.clear();
+  TextureReplayObserver* const watching = observer.load();
+  if (watching != nullptr) watching->before_replay(cache, traces);
+  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
+  const int group_bits = group_bits_for(cache.sets(), threads);
+  const TextureTraffic traffic = group_bits == 0
+                                     ? replay_serial(cache, traces, out)
+                                     : replay_parallel(cache, traces, threads, group_bits, out);
+  if (watching != nullptr) watching->after_replay(cache, traffic);
+  return traffic;
 }
 
 }  // namespace ontile

@@ -314,38 +314,22 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   std::vector<TileTrace> traces(grid.tile_count());
   report.tile_stats.resize(grid.tile_count());
   std::atomic<uint32_t> tiles_started{0};
-  TextureReplayDetail texture_detail;
-  const std::unique_ptr<TextureReplayStream> texture_replay = external.texel_replay(traces, texture_detail);
-  const auto run_tile = [&](int tile) {
+  ontile::parallel_for(0, grid.tile_count(), [&](int tile) {
     TileStats& stats = report.tile_stats[tile];
     stats.order = tiles_started.fetch_add(1, std::memory_order_relaxed);
     stats.thread = tbb::this_task_arena::current_thread_index();
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
     TileCounters tile_counters;
-    std::vector<uint64_t>& texel_buffer = texel_buffers.local();
-    execute_tile(pass, params, tile, memory, tile_counters, traces[tile], texel_buffer, external,
-                 config.hierarchical_z);
-    texture_replay->tile_recorded(static_cast<size_t>(tile), texel_buffer);
+    execute_tile(pass, params, tile, memory, tile_counters, traces[tile],
+                 texel_buffers.local(), external, config.hierarchical_z);
     counters.local().add(tile_counters);
     record_tile_counters(tile_counters, params, tile, stats);
-  };
-  // Tiles are taken in index order by whichever worker is free (not in ranges, as
-  // tbb::parallel_for splits them), so they complete nearly in order and the texture replay,
-  // which follows tile order and reads a tile only on the thread that recorded it
-  // (TextureReplayStream), keeps pace with them on every thread instead of waiting for the last.
-  std::atomic<int> next_tile{0};
-  const int workers =
-      std::min(grid.tile_count(), std::max(1, tbb::this_task_arena::max_concurrency()));
-  ontile::parallel_for(0, workers, [&](int) {
-    for (int tile = next_tile.fetch_add(1, std::memory_order_relaxed); tile < grid.tile_count();
-         tile = next_tile.fetch_add(1, std::memory_order_relaxed)) {
-      run_tile(tile);
-    }
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
-  report.texture = texture_replay->finish();
+  TextureReplayDetail texture_detail;
+  report.texture = external.texel_accesses(traces, &texture_detail);
   attribute_texture_misses(texture_detail, external.texture_cache_config().line_bytes, report);
   external.fragments(traces);
   if (external.replays_parameter_reads()) replay_parameter_reads(params, pass, external);
