@@ -44,16 +44,16 @@ struct Surface {
 // power in [0, 1], which pow(n_dot_h, shininess) is for n_dot_h in [0, 1] (never below 0 here;
 // NaN fails the test) and shininess = exp2(...) >= 0 or +inf (a NaN shininess skips nothing).
 // Lights out of range and shadowed fragments are such lanes.
-HWY_INLINE MF needs_power(DF df, const Surface& s, const VF radiance[3], VF n_dot_l, VF n_dot_h, float shininess) {
+HWY_INLINE MF needs_power(DF df, const Surface& s, const VF weight[3], VF n_dot_h, float shininess) {
   if (std::isnan(shininess)) return hn::FirstN(df, hn::Lanes(df));
   const DI di;
   const auto below_2_126 = hn::Set(di, 0x7E800000);  // bits of 2^126; negative floats compare below 0
   const auto zero_bits = hn::Zero(di), minus_one = hn::Set(di, -1);
   MF unlit = hn::Le(n_dot_h, hn::Set(df, 1.0f));
   for (int c = 0; c < 3; ++c) {
-    const auto weight = hn::BitCast(di, hn::Mul(radiance[c], n_dot_l));
+    const auto weight_bits = hn::BitCast(di, weight[c]);
     const auto diffuse = hn::BitCast(di, s.diffuse[c]), specular = hn::BitCast(di, s.specular[c]);
-    const auto ok = hn::And(hn::And(hn::Eq(weight, zero_bits), hn::And(hn::Gt(diffuse, minus_one), hn::Lt(diffuse, below_2_126))),
+    const auto ok = hn::And(hn::And(hn::Eq(weight_bits, zero_bits), hn::And(hn::Gt(diffuse, minus_one), hn::Lt(diffuse, below_2_126))),
                             hn::And(hn::Gt(specular, minus_one), hn::Lt(specular, below_2_126)));
     unlit = hn::And(unlit, hn::RebindMask(df, ok));
   }
@@ -74,8 +74,10 @@ HWY_INLINE void add_blinn_phong(DF df, const Surface& s, const VF l[3], const VF
                        hn::Mul(s.n[2], hn::Div(hz, divisor)));
   const VF n_dot_h = hn::IfThenElseZero(has_length, hn::IfThenElse(hn::Lt(d, zero), zero, d));
   const MF facing = hn::Gt(n_dot_l, zero);
+  VF weight[3];  // radiance x N.L, the term's first product
+  for (int c = 0; c < 3; ++c) weight[c] = hn::Mul(radiance[c], n_dot_l);
   VF power = zero;
-  const uint32_t shaded = mask_bits(df, hn::And(hn::And(lit, facing), needs_power(df, s, radiance, n_dot_l, n_dot_h, shininess)));
+  const uint32_t shaded = mask_bits(df, hn::And(hn::And(lit, facing), needs_power(df, s, weight, n_dot_h, shininess)));
   if (shaded != 0) {
     alignas(64) float base[HWY_MAX_BYTES / sizeof(float)], raised[HWY_MAX_BYTES / sizeof(float)] = {};
     hn::Store(n_dot_h, df, base);
@@ -86,7 +88,7 @@ HWY_INLINE void add_blinn_phong(DF df, const Surface& s, const VF l[3], const VF
     power = hn::Load(df, raised);
   }
   for (int c = 0; c < 3; ++c) {
-    const VF term = hn::Mul(hn::Mul(radiance[c], n_dot_l), hn::Add(s.diffuse[c], hn::Mul(s.specular[c], power)));
+    const VF term = hn::Mul(weight[c], hn::Add(s.diffuse[c], hn::Mul(s.specular[c], power)));
     rgb[c] = hn::Add(rgb[c], hn::IfThenElseZero(facing, term));
   }
 }
