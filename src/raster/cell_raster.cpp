@@ -98,13 +98,18 @@ uint64_t CoverageKernel(const int32_t* e0, const int32_t* a, const int32_t* b, i
 
 // z = clamp(origin + dx * fx + dy * fy, 0, 1) at every pixel of a cell, the sample offset folded
 // into fx, fy. The clamp is compare-and-select so NaN is handled alike on every target.
-void CellDepthKernel(float origin, float dx, float dy, float off_x, float off_y, float* out) {
+// Only the vectors holding rows [first_row, end_row) are written (a small triangle covers a
+// row or two of a cell); each lane's value depends on its pixel alone.
+void CellDepthKernel(float origin, float dx, float dy, float off_x, float off_y, int first_row,
+                     int end_row, float* out) {
   const hn::ScalableTag<float> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
   const auto zero = hn::Zero(d);
   const auto one = hn::Set(d, 1.0f);
-  for (size_t i = 0; i < kCellPixels; i += n) {
+  const size_t begin = static_cast<size_t>(first_row * kCellSizePx) / n * n;
+  const size_t end = std::min<size_t>((static_cast<size_t>(end_row * kCellSizePx) + n - 1) / n * n, kCellPixels);
+  for (size_t i = begin; i < end; i += n) {
     const auto fx = hn::Add(hn::ConvertTo(d, hn::Load(di, kCellLx + i)), hn::Set(d, off_x));
     const auto fy = hn::Add(hn::ConvertTo(d, hn::Load(di, kCellLy + i)), hn::Set(d, off_y));
     auto z = hn::Add(hn::Add(hn::Set(d, origin), hn::Mul(hn::Set(d, dx), fx)),
@@ -130,13 +135,59 @@ auto compare(D d, CompareOp op, V incoming, V stored) {
   return hn::FirstN(d, hn::Lanes(d));
 }
 
-CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, float* stored,
-                         int stride, int cols, int rows, CellMask candidates) {
+// DepthTestKernel on whole-width rows, the compare fixed at compile time (Always when not
+// testing): one vector (or two) per row with candidates. With range_lo, the fold of
+// depth_range_cell_rows over every row as it is after the writes, each lane starting from the
+// first stored depth after its write (the value depth_range starts from).
+template <CompareOp kOp>
+CellMask depth_test_rows(bool write, const float* z, float* stored, int stride, int rows,
+                         CellMask candidates, float* range_lo, float* range_hi) {
   const hn::CappedTag<float, kCellSizePx> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
+  alignas(64) static constexpr int32_t kLaneBit[kCellSizePx] = {1, 2, 4, 8, 16, 32, 64, 128};
   CellMask passing = 0;
-  if (cols != kCellSizePx) {  // a cell cut by a narrow tile or the target's edge: scalar
+  const bool ranged = range_lo != nullptr;
+  const float first = write && (candidates & 1u) && depth_compare_passes(kOp, z[0], stored[0]) ? z[0] : stored[0];
+  auto vlo = hn::Set(d, first), vhi = vlo;
+  for (int ly = 0; ly < rows; ++ly) {
+    const uint32_t row_bits = static_cast<uint32_t>(candidates >> (ly * kCellSizePx)) & 0xFFu;
+    float* row = stored + ly * stride;
+    if (!row_bits) {
+      if (!ranged) continue;
+      for (size_t x = 0; x < kCellSizePx; x += n) {
+        const auto now = hn::LoadU(d, row + x);
+        vlo = hn::IfThenElse(hn::Lt(now, vlo), now, vlo);
+        vhi = hn::IfThenElse(hn::Gt(now, vhi), now, vhi);
+      }
+      continue;
+    }
+    const auto row_mask = hn::Set(di, static_cast<int32_t>(row_bits));
+    for (size_t x = 0; x < kCellSizePx; x += n) {
+      const auto covered = hn::RebindMask(d, hn::Ne(hn::And(row_mask, hn::Load(di, kLaneBit + x)), hn::Zero(di)));
+      const auto incoming = hn::LoadU(d, z + ly * kCellSizePx + x);
+      const auto old = hn::LoadU(d, row + x);
+      const auto pass = kOp == CompareOp::Always ? covered : hn::And(covered, compare(d, kOp, incoming, old));
+      passing |= mask_bits(d, pass) << (ly * kCellSizePx + x);
+      const auto now = write ? hn::IfThenElse(pass, incoming, old) : old;
+      if (write) hn::StoreU(now, d, row + x);
+      if (!ranged) continue;
+      vlo = hn::IfThenElse(hn::Lt(now, vlo), now, vlo);
+      vhi = hn::IfThenElse(hn::Gt(now, vhi), now, vhi);
+    }
+  }
+  if (ranged) {
+    *range_lo = hn::GetLane(hn::MinOfLanes(d, vlo));
+    *range_hi = hn::GetLane(hn::MaxOfLanes(d, vhi));
+  }
+  return passing;
+}
+
+CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, float* stored,
+                         int stride, int cols, int rows, CellMask candidates, float* range_lo,
+                         float* range_hi) {
+  CellMask passing = 0;
+  if (cols != kCellSizePx) {  // a cell cut by a narrow tile or the target's edge: scalar, no range
     for (int ly = 0; ly < rows; ++ly) {
       for (int lx = 0; lx < cols; ++lx) {
         const int bit = ly * kCellSizePx + lx;
@@ -149,23 +200,18 @@ CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, fl
     }
     return passing;
   }
-  alignas(64) static constexpr int32_t kLaneBit[kCellSizePx] = {1, 2, 4, 8, 16, 32, 64, 128};
-  for (int ly = 0; ly < rows; ++ly) {
-    const uint32_t row_bits = static_cast<uint32_t>(candidates >> (ly * kCellSizePx)) & 0xFFu;
-    if (!row_bits) continue;
-    for (size_t x = 0; x < kCellSizePx; x += n) {
-      const auto lane_bits = hn::Load(di, kLaneBit + x);
-      const auto covered = hn::RebindMask(
-          d, hn::Ne(hn::And(hn::Set(di, static_cast<int32_t>(row_bits)), lane_bits), hn::Zero(di)));
-      float* row = stored + ly * stride + x;
-      const auto incoming = hn::LoadU(d, z + ly * kCellSizePx + x);
-      const auto old = hn::LoadU(d, row);
-      const auto pass = test ? hn::And(covered, compare(d, op, incoming, old)) : covered;
-      passing |= mask_bits(d, pass) << (ly * kCellSizePx + x);
-      if (write) hn::StoreU(hn::IfThenElse(pass, incoming, old), d, row);
-    }
+  const CompareOp tested = test ? op : CompareOp::Always;
+  switch (tested) {
+    case CompareOp::Never: return depth_test_rows<CompareOp::Never>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::Less: return depth_test_rows<CompareOp::Less>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::LessEqual: return depth_test_rows<CompareOp::LessEqual>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::Equal: return depth_test_rows<CompareOp::Equal>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::Greater: return depth_test_rows<CompareOp::Greater>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::GreaterEqual: return depth_test_rows<CompareOp::GreaterEqual>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::NotEqual: return depth_test_rows<CompareOp::NotEqual>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
+    case CompareOp::Always: break;
   }
-  return passing;
+  return depth_test_rows<CompareOp::Always>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
 }
 
 // Minimum and maximum of `rows` rows of `count` floats, `stride` apart, with the scalar
@@ -374,16 +420,19 @@ void cell_depth_bounds(const CellPlane& z, int cell_x0, int cell_y0, int x0, int
   max_out = z.origin + zx_hi + zy_hi + margin;
 }
 
-void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels]) {
+void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels],
+                            int first_row, int end_row) {
   const float off_x = static_cast<float>(sx - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
   const float off_y = static_cast<float>(sy - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
-  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, off_x, off_y, out);
+  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, off_x, off_y, first_row,
+                                        end_row, out);
 }
 
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
-                         float* stored, int stride, int cols, int rows, CellMask candidates) {
+                         float* stored, int stride, int cols, int rows, CellMask candidates,
+                         float* range_lo, float* range_hi) {
   return HWY_DYNAMIC_DISPATCH(DepthTestKernel)(op, test, write, z, stored, stride, cols, rows,
-                                               candidates);
+                                               candidates, range_lo, range_hi);
 }
 
 void depth_range(const float* first, int stride, int count, int rows, float& lo, float& hi) {

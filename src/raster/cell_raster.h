@@ -93,8 +93,10 @@ void cell_depth_bounds(const CellPlane& depth, int cell_x0, int cell_y0, int x0,
 
 // Depth of the plane at every pixel of a cell, at sample offset (sx, sy) in 1/256 px from the
 // pixel's top-left corner, clamped to [0, 1] (Vulkan clamps before the depth test): out[64],
-// row-major. Same bits on every SIMD target (no FMA, IEEE operations only).
-void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels]);
+// row-major. Same bits on every SIMD target (no FMA, IEEE operations only). Only rows
+// [first_row, end_row) are guaranteed written (others may be or not): a small triangle's rows.
+void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels],
+                            int first_row = 0, int end_row = kCellSizePx);
 
 // Perspective-correct interpolation for `count` fragments (a multiple of 4, the quad lanes; it
 // reads and writes nothing past them): fragment f sits at
@@ -138,9 +140,13 @@ void interpolate_whole_quads(const InterpolationInput& in, const QuadOrigins& qu
 // Depth test of the covered pixels of one cell of single-sample tile memory whose rows are
 // `stride` floats apart: stored[(ly * stride) + lx] for the cell's `cols` x `rows` pixels.
 // Returns the candidates that pass `op` (all candidates when !test) and, when `write`, stores
-// their depth. The caller passes only candidates inside cols x rows.
+// their depth. The caller passes only candidates inside cols x rows. With range_lo and
+// range_hi, for a whole-width cell (cols == 8) only, also the minimum and maximum of the
+// rows x 8 stored depths after the writes, as depth_range() gives them (hierarchical Z's
+// refresh without a second pass over the cell).
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
-                         float* stored, int stride, int cols, int rows, CellMask candidates);
+                         float* stored, int stride, int cols, int rows, CellMask candidates,
+                         float* range_lo = nullptr, float* range_hi = nullptr);
 
 // The minimum and maximum of `rows` rows of `count` stored depths, `stride` floats apart (what
 // hierarchical Z keeps per cell). A NaN is never chosen unless it is first[0].

@@ -24,6 +24,11 @@ class HierarchicalDepth {
   void refresh(int cell, const float* first, int stride, int count, int rows) {
     depth_range(first, stride, count, rows, min_[cell], max_[cell]);
   }
+  // Sets cell `cell` from bounds computed as refresh() would (depth_test_cell's range).
+  void set(int cell, float lo, float hi) {
+    min_[cell] = lo;
+    max_[cell] = hi;
+  }
   // True when every incoming depth in [incoming_min, incoming_max] fails `op` against every
   // stored depth of the cell. Only the ordering comparisons can be decided from bounds.
   bool rejects(int cell, CompareOp op, float incoming_min, float incoming_max) const {

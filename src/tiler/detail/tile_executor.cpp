@@ -224,9 +224,13 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
           st.passing[s] = st.covered[s];
           continue;
         }
-        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z);
+        // Only the rows with covered pixels: nothing reads the depth of others (the depth test
+        // and the late depth write read covered pixels only).
+        const int first_row = std::countr_zero(st.covered[s]) / kCellSizePx;
+        const int end_row = (kCellPixels - 1 - std::countl_zero(st.covered[s])) / kCellSizePx + 1;
+        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z, first_row, end_row);
         if (ctx.depth_unorm_bits) {
-          for (int i = 0; i < kCellPixels; ++i) z[i] = ctx.quantize_depth(z[i]);
+          for (int i = first_row * kCellSizePx; i < end_row * kCellSizePx; ++i) z[i] = ctx.quantize_depth(z[i]);
         }
         // A tile narrower than a cell (budget-reduced tiles) starts inside it at (lx0, ly0).
         const int lx0 = std::max(cx, rect.x0) - cx, ly0 = std::max(cy, rect.y0) - cy;
@@ -234,9 +238,17 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
         const int shift = ly0 * kCellSizePx + lx0;
         const bool write_now = ctx.depth_write && !ctx.late_z;
         if (samples == 1) {
+          // A whole-width cell's new depth bounds come from the test's own pass over the rows.
+          const bool range_now = write_now && ctx.hiz_tracked && cols == kCellSizePx;
+          float lo = 0.0f, hi = 0.0f;
           st.passing[s] = depth_test_cell(ctx.draw.raster.depth_compare, ctx.depth_test, write_now,
                                           z + shift, stored, memory.width(), cols, rows,
-                                          st.covered[s] >> shift) << shift;
+                                          st.covered[s] >> shift, range_now ? &lo : nullptr,
+                                          range_now ? &hi : nullptr) << shift;
+          if (range_now && st.passing[s]) {
+            scratch.hiz.set(cell, lo, hi);
+            continue;  // the bounds are current: `wrote` stays false, no refresh below
+          }
         } else {
           CellMask pass = 0;
           for (int ly = ly0; ly < ly0 + rows; ++ly) {
