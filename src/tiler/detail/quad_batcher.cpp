@@ -157,6 +157,15 @@ void QuadBatcher::shade_invocation(int inv) {
         l2 = planes[1].origin;
         z = planes[2].origin;
       }
+      if (!ctx.per_sample) {  // pixel centres: one entry per quad (interpolate_whole_quads)
+        origin_ox_[count] = quad.qx - cx;
+        origin_oy_[count] = quad.qy - cy;
+        origin_l1_[count] = l1;
+        origin_l2_[count] = l2;
+        origin_z_[count] = z;
+        ++count;
+        continue;
+      }
       for (int lane = 0; lane < kQuadLanes; ++lane) {
         const int f = count * kQuadLanes + lane;
         fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
@@ -175,27 +184,10 @@ void QuadBatcher::shade_invocation(int inv) {
   if (count == 0) return;
   b.quad_count = count;
   const int padded = b.padded_fragment_count();
-  // Padding repeats the last fragment so every SIMD lane computes finite, harmless values.
-  for (int f = count * kQuadLanes; f < padded; ++f) {
-    const int last = count * kQuadLanes - 1;
-    fx_[f] = fx_[last];
-    fy_[f] = fy_[last];
-    l1_[f] = l1_[last];
-    l2_[f] = l2_[last];
-    z_[f] = z_[last];
-  }
-  // Each run with its triangle's planes and vertices; the last run also fills the padding.
-  for (int r = 0; r < runs; ++r) {
-    const BatchTriangle& t = triangles_[run_triangle[r]];
-    const int first = run_first[r] * kQuadLanes;
-    const int end = r + 1 < runs ? run_first[r + 1] * kQuadLanes : padded;
-    const int n = ctx.varying_count;
-    InterpolationInput in{fx_ + first, fy_ + first, l1_ + first, l2_ + first, z_ + first,
-                          t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
-                          {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
-                          {t.varyings, t.varyings + n, t.varyings + 2 * n},
-                          n, varyings_read_};
-    interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
+  if (!ctx.per_sample) {
+    interpolate_quads(count, padded / kQuadLanes, runs, run_triangle, run_first);
+  } else {
+    interpolate_samples(count, padded, runs, run_triangle, run_first);
   }
   b.varying_count = ctx.varying_count;
   b.color_output_count = static_cast<int>(ctx.subpass.color_outputs.size());
@@ -227,12 +219,74 @@ void QuadBatcher::shade_invocation(int inv) {
     if (slot < 0) continue;
     counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
     const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
+    for (int lane = 0; discarded && lane < kQuadLanes; ++lane) {
       if (!((discarded >> lane) & 1u)) continue;
       const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
       queue_[q].passing &= ~lane_bits;
       queue_[q].coverage &= ~lane_bits;
     }
+  }
+}
+
+// The runs' input for interpolation: each run's triangle planes, vertex 1/w and varyings.
+InterpolationInput QuadBatcher::run_input(int triangle) const {
+  const BatchTriangle& t = triangles_[triangle];
+  const int n = ctx_->varying_count;
+  return InterpolationInput{nullptr, nullptr, nullptr, nullptr, nullptr,
+                            t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
+                            {t.tri->setup.inv_w[0], t.tri->setup.inv_w[1], t.tri->setup.inv_w[2]},
+                            {t.varyings, t.varyings + n, t.varyings + 2 * n},
+                            n, varyings_read_};
+}
+
+// Interpolation at pixel centres from one origin entry per quad (interpolate_whole_quads: the
+// bits of interpolate_fragments given each lane's offsets), runs of one triangle each; the
+// padding quads up to padded_quads repeat the last quad.
+void QuadBatcher::interpolate_quads(int count, int padded_quads, int runs, const int* run_triangle,
+                                    const int* run_first) {
+  FragmentBatch& b = *batch_;
+  for (int q = count; q < padded_quads; ++q) {
+    origin_ox_[q] = origin_ox_[count - 1];
+    origin_oy_[q] = origin_oy_[count - 1];
+    origin_l1_[q] = origin_l1_[count - 1];
+    origin_l2_[q] = origin_l2_[count - 1];
+    origin_z_[q] = origin_z_[count - 1];
+  }
+  for (int r = 0; r < runs; ++r) {
+    const int first = run_first[r];
+    const int end = r + 1 < runs ? run_first[r + 1] : padded_quads;
+    const QuadOrigins origins{origin_ox_ + first, origin_oy_ + first, origin_l1_ + first,
+                              origin_l2_ + first, origin_z_ + first};
+    interpolate_whole_quads(run_input(run_triangle[r]), origins, end - first,
+                            b.depth + first * kQuadLanes, &b.varyings[0][first * kQuadLanes],
+                            kBatchFragments);
+  }
+}
+
+// Interpolation at one sample position per fragment (sample shading), from the per-fragment
+// inputs shade_invocation stored; the padding fragments up to `padded` repeat the last one.
+void QuadBatcher::interpolate_samples(int count, int padded, int runs, const int* run_triangle,
+                                      const int* run_first) {
+  FragmentBatch& b = *batch_;
+  for (int f = count * kQuadLanes; f < padded; ++f) {
+    const int last = count * kQuadLanes - 1;
+    fx_[f] = fx_[last];
+    fy_[f] = fy_[last];
+    l1_[f] = l1_[last];
+    l2_[f] = l2_[last];
+    z_[f] = z_[last];
+  }
+  // Each run with its triangle's planes and vertices; the last run also fills the padding.
+  for (int r = 0; r < runs; ++r) {
+    const int first = run_first[r] * kQuadLanes;
+    const int end = r + 1 < runs ? run_first[r + 1] * kQuadLanes : padded;
+    InterpolationInput in = run_input(run_triangle[r]);
+    in.fx = fx_ + first;
+    in.fy = fy_ + first;
+    in.l1_origin = l1_ + first;
+    in.l2_origin = l2_ + first;
+    in.z_origin = z_ + first;
+    interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
   }
 }
 

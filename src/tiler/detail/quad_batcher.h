@@ -159,6 +159,11 @@ class QuadBatcher {
     return triangle + 1 < triangle_count_ ? triangles_[triangle + 1].first_quad : queued_;
   }
   void write_back_single_sample();
+  InterpolationInput run_input(int triangle) const;
+  void interpolate_quads(int count, int padded_quads, int runs, const int* run_triangle,
+                         const int* run_first);
+  void interpolate_samples(int count, int padded, int runs, const int* run_triangle,
+                           const int* run_first);
   // One whole batch of add_whole_rect: the kBatchQuads quads of `rect` from (qx, qy) on in
   // row-major order; qx, qy are advanced past them.
   void shade_whole_batch(const TileRect& rect, int& qx, int& qy, int first_cell_x,
@@ -184,6 +189,12 @@ class QuadBatcher {
   // Interpolation inputs per batch fragment.
   alignas(64) float fx_[kBatchFragments], fy_[kBatchFragments];
   alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
+  // shade_invocation's interpolation inputs per quad at pixel centres (interpolate_whole_quads).
+  alignas(64) int32_t origin_ox_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) int32_t origin_oy_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float origin_l1_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float origin_l2_[kBatchQuads + kQuadOriginsPadding] = {};
+  alignas(64) float origin_z_[kBatchQuads + kQuadOriginsPadding] = {};
   // write_back_single_sample's quads whose lanes all pass: first fragment, tile pixel index.
   int32_t full_first_fragment_[kBatchQuads];
   uint32_t full_pixel_[kBatchQuads];
