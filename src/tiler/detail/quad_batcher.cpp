@@ -26,15 +26,7 @@ int unorm_bits_of(const RenderPassDesc& pass) {
 
 }  // namespace
 
-TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc& subpass_,
-                                 const DrawCall& draw_, const BinnedTriangle& tri_,
-                                 const float* varyings_, int varying_count_,
-                                 const SamplePattern& pattern_, const TileRect& rect_,
-                                 const FramebufferFetch* fetch_, uint32_t triangle_ref_,
-                                 std::vector<FragmentAccess>* fragments_)
-    : pass(pass_), subpass(subpass_), draw(draw_), tri(tri_), varyings(varyings_),
-      varying_count(varying_count_), pattern(pattern_), rect(rect_), fetch(fetch_),
-      triangle_ref(triangle_ref_), fragments(fragments_) {
+DrawState::DrawState(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw) {
   has_depth = pass.depth_index >= 0;
   depth_test = has_depth && draw.raster.depth_test;
   depth_write = has_depth && draw.raster.depth_write && !subpass.depth_read_only;
@@ -46,10 +38,31 @@ TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc&
   hiz_enabled = depth_test && !late_z && HierarchicalDepth::usable(draw.raster.depth_compare);
 }
 
-float TriangleContext::quantize_depth(double z) const {
-  float f = static_cast<float>(std::clamp(z, 0.0, 1.0));
-  if (depth_unorm_bits) f = unorm_to_float(float_to_unorm(f, depth_unorm_bits), depth_unorm_bits);
-  return f;
+TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc& subpass_,
+                                 const DrawCall& draw_, const BinnedTriangle& tri_,
+                                 const float* varyings_, int varying_count_,
+                                 const SamplePattern& pattern_, const TileRect& rect_,
+                                 const FramebufferFetch* fetch_, uint32_t triangle_ref_,
+                                 std::vector<FragmentAccess>* fragments_)
+    : TriangleContext(pass_, subpass_, draw_, tri_, varyings_, varying_count_, pattern_, rect_,
+                      fetch_, triangle_ref_, fragments_, DrawState(pass_, subpass_, draw_)) {}
+
+TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc& subpass_,
+                                 const DrawCall& draw_, const BinnedTriangle& tri_,
+                                 const float* varyings_, int varying_count_,
+                                 const SamplePattern& pattern_, const TileRect& rect_,
+                                 const FramebufferFetch* fetch_, uint32_t triangle_ref_,
+                                 std::vector<FragmentAccess>* fragments_, const DrawState& state)
+    : pass(pass_), subpass(subpass_), draw(draw_), tri(tri_), varyings(varyings_),
+      varying_count(varying_count_), pattern(pattern_), rect(rect_), fetch(fetch_),
+      triangle_ref(triangle_ref_), fragments(fragments_), has_depth(state.has_depth),
+      depth_test(state.depth_test), depth_write(state.depth_write), late_z(state.late_z),
+      per_sample(state.per_sample), write_color(state.write_color),
+      depth_unorm_bits(state.depth_unorm_bits), hiz_tracked(state.hiz_tracked),
+      hiz_enabled(state.hiz_enabled) {}
+
+float TriangleContext::to_unorm_depth(float f) const {
+  return unorm_to_float(float_to_unorm(f, depth_unorm_bits), depth_unorm_bits);
 }
 
 void set_batches_across_triangles(bool enabled) { batches_across_triangles_enabled.store(enabled); }

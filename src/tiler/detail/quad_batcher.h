@@ -41,6 +41,15 @@ inline int lane_count(uint8_t lanes) {
 constexpr QuadCoverage kWholeQuadSample0 = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
                                            (1u << (3 * kMaxSamples));
 
+// A draw's state as its triangles see it, the same for all of them (computed once per draw
+// and tile rather than once per triangle: it asks the functor through virtual calls).
+struct DrawState {
+  bool has_depth, depth_test, depth_write, late_z, per_sample, write_color;
+  int depth_unorm_bits;
+  bool hiz_tracked, hiz_enabled;
+  DrawState(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw);
+};
+
 // What one triangle of a tile needs to know about its draw, pass and state.
 struct TriangleContext {
   const RenderPassDesc& pass;
@@ -68,7 +77,19 @@ struct TriangleContext {
                   const SamplePattern& pattern, const TileRect& rect,
                   const FramebufferFetch* fetch, uint32_t triangle_ref,
                   std::vector<FragmentAccess>* fragments);
-  float quantize_depth(double z) const;
+  // The same with the draw's state computed before.
+  TriangleContext(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw,
+                  const BinnedTriangle& tri, const float* varyings, int varying_count,
+                  const SamplePattern& pattern, const TileRect& rect,
+                  const FramebufferFetch* fetch, uint32_t triangle_ref,
+                  std::vector<FragmentAccess>* fragments, const DrawState& state);
+  // The incoming depth as the attachment holds it: clamped to [0, 1], rounded to float and,
+  // for a fixed-point format, to its nearest code. Inline: asked twice per cell.
+  float quantize_depth(double z) const {
+    const float f = static_cast<float>(z < 0.0 ? 0.0 : (z > 1.0 ? 1.0 : z));
+    return depth_unorm_bits ? to_unorm_depth(f) : f;
+  }
+  float to_unorm_depth(float f) const;
   // Early Z, or late Z with neither a depth test nor a depth write (deferred lighting, which
   // may discard): a covered quad's lanes then all pass unless the functor discards them.
   bool whole_quads_pass_as_covered() const { return !late_z || (!depth_test && !depth_write); }

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <bit>
 #include <cstring>
+#include <optional>
 
 #include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
@@ -364,6 +365,22 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
         }
         continue;
       }
+      if (samples == 1) {
+        // One sample: the quad's lanes are its coverage (lanes_of of the spread bits).
+        const uint32_t passing_rows = static_cast<uint32_t>(st.passing[0] >> (ly * kCellSizePx)) & 0xFFFFu;
+        while (quads) {
+          const int lx = std::countr_zero(quads);
+          quads &= quads - 1;
+          const uint32_t covered = ((rows >> lx) & 3u) | (((rows >> (lx + kCellSizePx)) & 3u) << 2);
+          const uint32_t passes = ((passing_rows >> lx) & 3u) | (((passing_rows >> (lx + kCellSizePx)) & 3u) << 2);
+          if (!ctx.late_z) {
+            counters.fragments_depth_rejected += lane_count(static_cast<uint8_t>(covered & ~passes));
+            if (!passes && !ctx.fragments) continue;
+          }
+          batcher.add(cx + lx, qy, cell, cx, cy, kSpreadLanes[covered], kSpreadLanes[passes]);
+        }
+        continue;
+      }
       while (quads) {
         const int lx = std::countr_zero(quads);
         quads &= quads - 1;
@@ -423,18 +440,27 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   for (const SubpassDesc& subpass : pass.subpasses) {
     scratch.fetches.emplace_back(memory, rect, subpass.inputs, pass.depth_index);
   }
+  // The draw's state, asked of its functors once per run of its triangles (virtual calls).
+  const DrawCall* state_draw = nullptr;
+  std::optional<DrawState> state;
+  int n = 0;
+  uint64_t triangle_bytes = 0;
   for (uint32_t e = begin; e < end; ++e) {
     const uint32_t ref = params.tile_entries[e];
     const BinnedTriangle& tri = params.triangle(ref);
     const SubpassDesc& subpass = pass.subpasses[tri.subpass];
     const DrawCall& draw = subpass.draws[tri.draw];
-    const int n = draw.vertex_shader->varying_count();
-    counters.parameter_bytes_read +=
-        kTileListEntryBytes + kPrimitiveRecordBytes +
-        3u * post_transform_vertex_bytes(n, params.vertex_output.varying_component_bytes);
+    if (&draw != state_draw) {
+      state_draw = &draw;
+      state.emplace(pass, subpass, draw);
+      n = draw.vertex_shader->varying_count();
+      triangle_bytes = kTileListEntryBytes + kPrimitiveRecordBytes +
+                       3u * post_transform_vertex_bytes(n, params.vertex_output.varying_component_bytes);
+    }
+    counters.parameter_bytes_read += triangle_bytes;
     TriangleContext ctx(pass, subpass, draw, tri, params.varyings(ref, tri), n, pattern,
                               rect, &scratch.fetches[tri.subpass], ref,
-                              record_fragment_accesses ? &trace.fragments : nullptr);
+                              record_fragment_accesses ? &trace.fragments : nullptr, *state);
     ctx.hiz_enabled = ctx.hiz_enabled && hierarchical_z;
     // Quads of earlier triangles still queued are shaded and written before anything of a
     // triangle that cannot join their batch happens.
