@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include "raster/texture_quad_simd.h"
+#include "raster/log2_exact.h"
 #include "raster/texel_wrap.h"
 
 #include <algorithm>
@@ -538,7 +539,7 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
       for (int r = first_read; r < batch.read_count; ++r) {
         const BatchRead8& read = batch.reads[r];
         QuadSample8& job = jobs[r];
-        float lambda = std::log2(rho[r][j]) + read.lod_bias;
+        float lambda = log2_exact(rho[r][j]) + read.lod_bias;
         // linear8_job's level selection.
         job.level_count = 1;
         job.blend = 0.0f;
