@@ -311,8 +311,9 @@ CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
   for (int k = 0; k < 3; ++k) {
     const EdgeFunction& e = t.edge[k];
     c_biased[k] = e.c + e.bias;
-    lowest[k] = std::min<int64_t>(e.a, 0) * kCellSpanSubpx + std::min<int64_t>(e.b, 0) * kCellSpanSubpx;
-    highest[k] = std::max<int64_t>(e.a, 0) * kCellSpanSubpx + std::max<int64_t>(e.b, 0) * kCellSpanSubpx;
+    // One multiply each: (min(a, 0) + min(b, 0)) * span is the same integer (no overflow).
+    lowest[k] = (std::min<int64_t>(e.a, 0) + std::min<int64_t>(e.b, 0)) * kCellSpanSubpx;
+    highest[k] = (std::max<int64_t>(e.a, 0) + std::max<int64_t>(e.b, 0)) * kCellSpanSubpx;
     int32_ok[k] = std::abs(e.a) + std::abs(e.b) <= kMaxInt32EdgeSlope;
     a_step[k] = int32_ok[k] ? static_cast<int32_t>(e.a * kSubpixelScale) : 0;
     b_step[k] = int32_ok[k] ? static_cast<int32_t>(e.b * kSubpixelScale) : 0;

@@ -174,8 +174,9 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
   const int cj1 = (y_end - 1 - cells.first_y) / kCellSizePx;
   const int x_begin = std::max(rect.x0, t.min_x), y_begin = std::max(rect.y0, t.min_y);
   // Every cell inside all three edges (full-screen triangles): its coverage is its valid mask.
+  // Not asked for a single cell, whose own trivial accept in cell_coverage gives the same.
   const bool all_inside =
-      ci0 <= ci1 && cj0 <= cj1 &&
+      ci0 <= ci1 && cj0 <= cj1 && (ci0 != ci1 || cj0 != cj1) &&
       cells_trivially_accepted(t, cells.first_x + ci0 * kCellSizePx, cells.first_y + cj0 * kCellSizePx,
                                cells.first_x + ci1 * kCellSizePx, cells.first_y + cj1 * kCellSizePx);
   for (int cj = cj0; cj <= cj1; ++cj) {
