@@ -201,9 +201,6 @@ void load_texels(const Texture2D::TexelView& view, const int32_t* x, const int32
   HWY_DYNAMIC_DISPATCH(LoadTexelsKernel)(view, x, y, count, active, colour);
 }
 
-namespace {
-
-// The RGBA8 format whose codes TexelView::load decodes `view`'s texels from, if any.
 std::optional<PixelFormat> rgba8_codes_format(const Texture2D::TexelView& view) {
   if (view.surface_bytes) {
     if (view.surface_format == PixelFormat::RGBA8_UNORM || view.surface_format == PixelFormat::RGBA8_SRGB) {
@@ -216,8 +213,6 @@ std::optional<PixelFormat> rgba8_codes_format(const Texture2D::TexelView& view) 
   if (view.rgb_decode == srgb8_decode_table().data()) return PixelFormat::RGBA8_SRGB;
   return std::nullopt;
 }
-
-}  // namespace
 
 bool sample_batch_nearest(const Texture2D& texture, const SamplerDesc& sampler, const float* u,
                           const float* v, int fragment_count, float (&out)[4][kBatchFragments],
