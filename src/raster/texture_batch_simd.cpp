@@ -141,6 +141,27 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
     }
     return;
   }
+  if (view.surface_bytes && view.surface_format == PixelFormat::RGB10A2_UNORM) {
+    // One 32-bit word per texel, each code by one float division as DecodeRgb10a2Kernel
+    // (unorm_to_float's bits for every code, checked by PixelRows), as load_surface_texel.
+    const int32_t* words = reinterpret_cast<const int32_t*>(view.surface_bytes);
+    const VI ten_bits = hn::Set(di, 0x3FF);
+    const auto max10 = hn::Set(df, 1023.0f), max2 = hn::Set(df, 3.0f);
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const VI word = hn::GatherIndex(di, words, texel);
+      const hn::Vec<DF> value[4] = {
+          hn::Div(hn::ConvertTo(df, hn::And(word, ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<10>(word), ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<20>(word), ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<30>(word), hn::Set(di, 3))), max2)};
+      for (int c = 0; c < 4; ++c) {
+        hn::StoreU(hn::IfThenElse(on, value[c], hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const glm::vec4 texel = view.load(x[f], y[f]);
