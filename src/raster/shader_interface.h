@@ -174,6 +174,10 @@ class FragmentShader {
   // Bit k set when shade_batch (and shade, through it) reads varying k of its batches; the
   // raster core may leave the others unwritten (full-screen passes read 2 of 5, or none).
   virtual uint32_t varyings_read() const { return ~uint32_t{0}; }
+  // How many leading colour outputs shade_batch writes in full, every channel of every active
+  // fragment: the raster core's whole-tile batches then skip zeroing them first (unwritten
+  // outputs read as zero; see BatchOutput).
+  virtual int outputs_always_written() const { return 0; }
 };
 
 }  // namespace ontile

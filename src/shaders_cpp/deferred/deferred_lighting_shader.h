@@ -57,6 +57,7 @@ class DeferredLightingShader final : public FragmentShader {
         view_{inverse_view_projection, camera_position, width_px, height_px} {}
   bool may_discard() const override { return true; }
   uint32_t varyings_read() const override { return 0; }  // pixel coordinates only
+  int outputs_always_written() const override { return 1; }  // the lights, every fragment
 
   // Reads (depth, then the targets, fragment by fragment: the texel trace order of the classic
   // variant), then the decoding and the lights over the batch on SIMD lanes.

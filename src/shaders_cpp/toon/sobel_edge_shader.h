@@ -104,6 +104,7 @@ class SobelEdgeShader final : public FragmentShader {
   explicit SobelEdgeShader(const SobelEdgeParams& params);
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
   uint32_t varyings_read() const override { return 3u << FullScreenVertexShader::kUv; }  // uv
+  int outputs_always_written() const override { return 1; }  // colour, every path
 
   // The output colour at one uv (what shade_batch() writes for a fragment), with the same texel
   // trace.

@@ -107,8 +107,9 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   b.primitive_id = primitive_id;
   b.sample = -1;
   b.fetch = ctx.fetch;
-  // As shade_invocation: unwritten outputs are zero; opaque outputs quantised per batch.
-  for (int k = 0; k < b.color_output_count; ++k) {
+  // As shade_invocation: unwritten outputs are zero (those the functor always writes in full
+  // need no clearing: every lane of a whole batch is active); opaque outputs quantised per batch.
+  for (int k = ctx.draw.fragment_shader->outputs_always_written(); k < b.color_output_count; ++k) {
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
