@@ -77,8 +77,7 @@ class DeferredLightingShader final : public FragmentShader {
     // Active fragments in front of the far plane are lit, the others discarded (keeping the
     // light target's clear colour).
     const auto split_at_far_plane = [&](const float* depth) {
-      uint64_t near = 0;
-      for (int f = 0; f < count; ++f) near |= uint64_t{depth[f] < 1.0f} << f;
+      const uint64_t near = in_front_of_far_plane(depth, count);
       in.lit = active & near;
       out.discard_mask |= active & ~near;
     };
