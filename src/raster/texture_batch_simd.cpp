@@ -141,6 +141,22 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
     }
     return;
   }
+  if (view.surface_bytes && (view.surface_format == PixelFormat::D32_FLOAT ||
+                             view.surface_format == PixelFormat::R32_FLOAT)) {
+    // One float per texel, its bits as stored, then (d, 0, 0, 1) as load_surface_texel.
+    const float* texels = reinterpret_cast<const float*>(view.surface_bytes);
+    const hn::Vec<DF> constant[4] = {hn::Zero(df), hn::Zero(df), hn::Zero(df), hn::Set(df, 1.0f)};
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const auto depth = hn::GatherIndex(df, texels, texel);
+      for (int c = 0; c < 4; ++c) {
+        const auto value = c == 0 ? depth : constant[c];
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
   if (view.surface_bytes && view.surface_format == PixelFormat::RGB10A2_UNORM) {
     // One 32-bit word per texel, each code by one float division as DecodeRgb10a2Kernel
     // (unorm_to_float's bits for every code, checked by PixelRows), as load_surface_texel.
