@@ -28,11 +28,37 @@ int fetch_granules(const Texture2D::TexelView* views, const int32_t* x, const in
     masks[k] = fetched[k];
   }
   const uint64_t width = static_cast<uint64_t>(views[0].width);
+  // Textures whose granule ranges are pairwise disjoint never repeat a granule from one
+  // texture to the next: a fragment fetching every texture compares its first fetch only.
+  bool disjoint = true;
+  uint64_t first_granule[kTextures], last_granule_of[kTextures];
+  for (int k = 0; k < kTextures; ++k) {
+    const uint64_t bytes = static_cast<uint64_t>(views[k].width) * static_cast<uint64_t>(views[k].height) *
+                           views[k].memory_bytes_per_texel;
+    first_granule[k] = views[k].address >> 6;
+    last_granule_of[k] = (views[k].address + (bytes == 0 ? 0 : bytes - 1)) >> 6;
+    for (int j = 0; j < k; ++j) {
+      if (first_granule[k] <= last_granule_of[j] && first_granule[j] <= last_granule_of[k]) disjoint = false;
+    }
+  }
+  uint64_t every = disjoint ? ~uint64_t{0} : 0;  // bit f: fragment f fetches every texture
+  for (int k = 0; k < kTextures; ++k) every &= masks[k];
   uint64_t last = last_granule;
   int count = 0;
   for (uint64_t rest = any; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const uint64_t index = static_cast<uint64_t>(y[f]) * width + static_cast<uint64_t>(x[f]);
+    if ((every >> f) & 1u) {
+      const uint64_t first = (planes[0].address + index * planes[0].bytes) >> 6;
+      granules[count] = first;
+      count += first != last;
+      last = first;
+      for (int k = 1; k < kTextures; ++k) {
+        last = (planes[k].address + index * planes[k].bytes) >> 6;
+        granules[count++] = last;
+      }
+      continue;
+    }
     for (int k = 0; k < kTextures; ++k) {
       if (!((masks[k] >> f) & 1u)) continue;
       const uint64_t granule = (planes[k].address + index * planes[k].bytes) >> 6;
