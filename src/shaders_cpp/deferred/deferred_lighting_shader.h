@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <bit>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
@@ -93,10 +94,16 @@ class DeferredLightingShader final : public FragmentShader {
       // texelFetch a batch at a time: depth of the active fragments, then the targets of those
       // in front of the far plane, traced as per-fragment fetches would be.
       alignas(64) int32_t xs[kBatchFragments] = {}, ys[kBatchFragments] = {};
-      for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
-        const int f = std::countr_zero(rest);
-        xs[f] = in.x_px[f];
-        ys[f] = in.y_px[f];
+      if (active == (count >= 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1)) {
+        // Every fragment active (whole-tile batches): the pixels as they are.
+        std::memcpy(xs, in.x_px, sizeof(int32_t) * static_cast<size_t>(count));
+        std::memcpy(ys, in.y_px, sizeof(int32_t) * static_cast<size_t>(count));
+      } else {
+        for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+          const int f = std::countr_zero(rest);
+          xs[f] = in.x_px[f];
+          ys[f] = in.y_px[f];
+        }
       }
       const int padded = batch.padded_fragment_count();
       alignas(64) float depth[4][kBatchFragments];
