@@ -137,6 +137,11 @@ struct BatchOutput {
   // the same format gives each back unchanged (PixelRows test), so the batcher skips it. The
   // batcher clears it before every call.
   std::optional<PixelFormat> output0_codes_of;
+  // Bit k set by a functor when every fragment of output k (padding included) holds fragment
+  // 0's values: a per-draw constant, or an output it never writes (the batcher's zeros). The
+  // whole-tile path then quantises one pixel and copies it. The batcher clears it before every
+  // call; bits past the subpass's outputs are ignored.
+  uint32_t uniform_outputs = 0;
 
   void discard(int f) { discard_mask |= uint64_t{1} << f; }
   bool discarded(int f) const { return (discard_mask >> f) & 1u; }

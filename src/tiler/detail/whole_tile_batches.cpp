@@ -114,11 +114,18 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   }
   out.discard_mask = 0;
   out.output0_codes_of.reset();
+  out.uniform_outputs = 0;
   ctx.draw.fragment_shader->shade_batch(b, out);
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   for (int k = 0; k < b.color_output_count; ++k) {
     const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
     if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
+    if ((out.uniform_outputs >> k) & 1u) {
+      // Quantising is per value: one pixel's result is every pixel's.
+      quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3], 1);
+      for (int c = 0; c < 4; ++c) std::fill_n(out.color[k][c] + 1, kBatchFragments - 1, out.color[k][c][0]);
+      continue;
+    }
     quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                     kBatchFragments);
   }
