@@ -137,6 +137,11 @@ struct BatchOutput {
   // the same format gives each back unchanged (PixelRows test), so the batcher skips it. The
   // batcher clears it before every call.
   std::optional<PixelFormat> output0_codes_of;
+  // Bit k set by a functor when every fragment of output k (padding included) holds fragment
+  // 0's values: a per-draw constant, or an output it never writes (the batcher's zeros). The
+  // whole-tile path then quantises one pixel and copies it. The batcher clears it before every
+  // call; bits past the subpass's outputs are ignored.
+  uint32_t uniform_outputs = 0;
 
   void discard(int f) { discard_mask |= uint64_t{1} << f; }
   bool discarded(int f) const { return (discard_mask >> f) & 1u; }
@@ -174,6 +179,10 @@ class FragmentShader {
   // Bit k set when shade_batch (and shade, through it) reads varying k of its batches; the
   // raster core may leave the others unwritten (full-screen passes read 2 of 5, or none).
   virtual uint32_t varyings_read() const { return ~uint32_t{0}; }
+  // How many leading colour outputs shade_batch writes in full, every channel of every active
+  // fragment: the raster core's whole-tile batches then skip zeroing them first (unwritten
+  // outputs read as zero; see BatchOutput).
+  virtual int outputs_always_written() const { return 0; }
 };
 
 }  // namespace ontile

@@ -141,6 +141,43 @@ void LoadTexelsKernel(const Texture2D::TexelView& view, const int32_t* x, const 
     }
     return;
   }
+  if (view.surface_bytes && (view.surface_format == PixelFormat::D32_FLOAT ||
+                             view.surface_format == PixelFormat::R32_FLOAT)) {
+    // One float per texel, its bits as stored, then (d, 0, 0, 1) as load_surface_texel.
+    const float* texels = reinterpret_cast<const float*>(view.surface_bytes);
+    const hn::Vec<DF> constant[4] = {hn::Zero(df), hn::Zero(df), hn::Zero(df), hn::Set(df, 1.0f)};
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const auto depth = hn::GatherIndex(df, texels, texel);
+      for (int c = 0; c < 4; ++c) {
+        const auto value = c == 0 ? depth : constant[c];
+        hn::StoreU(hn::IfThenElse(on, value, hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
+  if (view.surface_bytes && view.surface_format == PixelFormat::RGB10A2_UNORM) {
+    // One 32-bit word per texel, each code by one float division as DecodeRgb10a2Kernel
+    // (unorm_to_float's bits for every code, checked by PixelRows), as load_surface_texel.
+    const int32_t* words = reinterpret_cast<const int32_t*>(view.surface_bytes);
+    const VI ten_bits = hn::Set(di, 0x3FF);
+    const auto max10 = hn::Set(df, 1023.0f), max2 = hn::Set(df, 3.0f);
+    for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
+      const auto on = float_lanes_of(df, active, f);
+      const VI texel = hn::Add(hn::Mul(hn::LoadU(di, y + f), width), hn::LoadU(di, x + f));
+      const VI word = hn::GatherIndex(di, words, texel);
+      const hn::Vec<DF> value[4] = {
+          hn::Div(hn::ConvertTo(df, hn::And(word, ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<10>(word), ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<20>(word), ten_bits)), max10),
+          hn::Div(hn::ConvertTo(df, hn::And(hn::ShiftRight<30>(word), hn::Set(di, 3))), max2)};
+      for (int c = 0; c < 4; ++c) {
+        hn::StoreU(hn::IfThenElse(on, value[c], hn::LoadU(df, colour[c] + f)), df, colour[c] + f);
+      }
+    }
+    return;
+  }
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
     const glm::vec4 texel = view.load(x[f], y[f]);
@@ -201,9 +238,6 @@ void load_texels(const Texture2D::TexelView& view, const int32_t* x, const int32
   HWY_DYNAMIC_DISPATCH(LoadTexelsKernel)(view, x, y, count, active, colour);
 }
 
-namespace {
-
-// The RGBA8 format whose codes TexelView::load decodes `view`'s texels from, if any.
 std::optional<PixelFormat> rgba8_codes_format(const Texture2D::TexelView& view) {
   if (view.surface_bytes) {
     if (view.surface_format == PixelFormat::RGBA8_UNORM || view.surface_format == PixelFormat::RGBA8_SRGB) {
@@ -216,8 +250,6 @@ std::optional<PixelFormat> rgba8_codes_format(const Texture2D::TexelView& view) 
   if (view.rgb_decode == srgb8_decode_table().data()) return PixelFormat::RGBA8_SRGB;
   return std::nullopt;
 }
-
-}  // namespace
 
 bool sample_batch_nearest(const Texture2D& texture, const SamplerDesc& sampler, const float* u,
                           const float* v, int fragment_count, float (&out)[4][kBatchFragments],

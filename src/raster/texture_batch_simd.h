@@ -22,6 +22,11 @@ void nearest_clamped_texels(const float* coord, int count, int size, int32_t* ou
 void load_texels(const Texture2D::TexelView& view, const int32_t* x, const int32_t* y, int count,
                  uint64_t active, float (&colour)[4][kBatchFragments]);
 
+// The RGBA8 format whose codes view.load() decodes the texels from (UNORM, or sRGB colour with
+// UNORM alpha, through pixel_format.h's tables), if any: a copy of such texels into an
+// attachment of that format needs no quantising (BatchOutput::output0_codes_of).
+std::optional<PixelFormat> rgba8_codes_format(const Texture2D::TexelView& view);
+
 // Texture2D::sample_quad for each quad of a batch in order, when `sampler` makes it read level 0
 // with a nearest, clamp-to-edge filter whatever the level of detail (nearest min and mag
 // filters, one level or no mipmapping: render targets, copies): fragments [0, fragment_count)

@@ -69,6 +69,8 @@ void GradientSkyShader::shade_batch(const FragmentBatch& batch, BatchOutput& out
     }
     out.color[0][3][f] = 1.0f;
   }
+  // Other outputs (normals, borders of an MRT pass) are never written: the batcher's zeros.
+  out.uniform_outputs |= ~uint32_t{1};
 }
 
 }  // namespace ontile

@@ -43,6 +43,7 @@ class GradientSkyShader final : public FragmentShader {
   GradientSkyShader(glm::vec3 zenith, glm::vec3 horizon, glm::vec3 ground)
       : zenith_(zenith), horizon_(horizon), ground_(ground) {}
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
+  int outputs_always_written() const override { return 1; }  // colour, every padded fragment
 
  private:
   glm::vec3 zenith_, horizon_, ground_;

@@ -45,8 +45,12 @@ std::unique_ptr<FragmentShader> lit_variant(const RenderMaterial& m, const PbrMa
       m.has_keyword("_EMISSION") && p.emission_map);
 }
 
+// The lighting pass only fetches texels (TextureSource), so a G-buffer target comes as a view
+// of its surface in its stored format (texel_source): no decoded float copy of a packed
+// format such as RGB10A2 normals, which cost a zero-filled 32 MiB vector and a decode per
+// 1080p frame; the values (decode_pixel) and the texel addresses are the copy's.
 const Texture2D* required_texture(const DrawContext& ctx, const std::string& name) {
-  const std::shared_ptr<const Texture2D> t = ctx.texture(name);
+  const std::shared_ptr<const Texture2D> t = ctx.texel_source(name);
   if (!t) throw Error("deferred lighting: texture '" + name + "' is not bound (the classic variant binds it after the G-buffer pass)");
   return t.get();  // the frame executor keeps render-target snapshots alive for the pass
 }

@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <bit>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
@@ -57,6 +58,7 @@ class DeferredLightingShader final : public FragmentShader {
         view_{inverse_view_projection, camera_position, width_px, height_px} {}
   bool may_discard() const override { return true; }
   uint32_t varyings_read() const override { return 0; }  // pixel coordinates only
+  int outputs_always_written() const override { return 1; }  // the lights, every fragment
 
   // Reads (depth, then the targets, fragment by fragment: the texel trace order of the classic
   // variant), then the decoding and the lights over the batch on SIMD lanes.
@@ -76,8 +78,7 @@ class DeferredLightingShader final : public FragmentShader {
     // Active fragments in front of the far plane are lit, the others discarded (keeping the
     // light target's clear colour).
     const auto split_at_far_plane = [&](const float* depth) {
-      uint64_t near = 0;
-      for (int f = 0; f < count; ++f) near |= uint64_t{depth[f] < 1.0f} << f;
+      const uint64_t near = in_front_of_far_plane(depth, count);
       in.lit = active & near;
       out.discard_mask |= active & ~near;
     };
@@ -93,10 +94,16 @@ class DeferredLightingShader final : public FragmentShader {
       // texelFetch a batch at a time: depth of the active fragments, then the targets of those
       // in front of the far plane, traced as per-fragment fetches would be.
       alignas(64) int32_t xs[kBatchFragments] = {}, ys[kBatchFragments] = {};
-      for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
-        const int f = std::countr_zero(rest);
-        xs[f] = in.x_px[f];
-        ys[f] = in.y_px[f];
+      if (active == (count >= 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1)) {
+        // Every fragment active (whole-tile batches): the pixels as they are.
+        std::memcpy(xs, in.x_px, sizeof(int32_t) * static_cast<size_t>(count));
+        std::memcpy(ys, in.y_px, sizeof(int32_t) * static_cast<size_t>(count));
+      } else {
+        for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
+          const int f = std::countr_zero(rest);
+          xs[f] = in.x_px[f];
+          ys[f] = in.y_px[f];
+        }
       }
       const int padded = batch.padded_fragment_count();
       alignas(64) float depth[4][kBatchFragments];

@@ -8,6 +8,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <cstring>
+
 #include "shaders_cpp/deferred/gbuffer_decode_lanes.h"
 #include "raster/lane_bits.h"
 
@@ -104,6 +106,23 @@ void DecodeGBufferKernel(const GBufferLayout& layout, const ViewReconstruction& 
   }
 }
 
+uint64_t InFrontOfFarPlaneKernel(const float* depth, int count) {
+  const hn::ScalableTag<float> df;
+  const size_t n = hn::Lanes(df);
+  const auto one = hn::Set(df, 1.0f);
+  uint64_t near = 0;
+  size_t f = 0;
+  for (; f + n <= static_cast<size_t>(count); f += n) {
+    uint8_t bytes[8] = {};
+    hn::StoreMaskBits(df, hn::Lt(hn::LoadU(df, depth + f), one), bytes);
+    uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof(bits));
+    near |= (n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1)) << f;
+  }
+  for (; f < static_cast<size_t>(count); ++f) near |= uint64_t{depth[f] < 1.0f} << f;
+  return near;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile
 HWY_AFTER_NAMESPACE();
@@ -112,6 +131,11 @@ HWY_AFTER_NAMESPACE();
 namespace ontile {
 
 HWY_EXPORT(DecodeGBufferKernel);
+HWY_EXPORT(InFrontOfFarPlaneKernel);
+
+uint64_t in_front_of_far_plane(const float* depth, int count) {
+  return HWY_DYNAMIC_DISPATCH(InFrontOfFarPlaneKernel)(depth, count);
+}
 
 void decode_gbuffer_lanes(const GBufferLayout& layout, const ViewReconstruction& view, const GBufferLanes& in,
                           int count, BrdfBatch& brdf, BatchVec3& normal, BatchVec3& world, BatchVec3& to_view) {

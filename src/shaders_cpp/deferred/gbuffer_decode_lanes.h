@@ -37,6 +37,10 @@ struct ViewReconstruction {
   glm::vec3 to_view(const glm::dvec3& world) const { return glm::vec3(glm::normalize(camera_position - world)); }
 };
 
+// Bit f set for f < count (at most kBatchFragments) where depth[f] < 1 (a NaN is not): the
+// fragments in front of the far plane, a compare per SIMD lane instead of a shift per fragment.
+uint64_t in_front_of_far_plane(const float* depth, int count);
+
 // For fragments f < count (a multiple of 4) lit in `in`: brdf and normal as decode_gbuffer
 // gives them, world = vec3(view.world_position(...)), to_view = view.to_view(world in double);
 // zero for the others (the lighting loops read every lane).

@@ -41,13 +41,16 @@ inline void direct_lighting(const SceneLighting& lighting, const BrdfBatch& brdf
                             const FragmentBatch& batch, uint64_t lit, BatchVec3& sum) {
   const int count = batch.fragment_count();
   alignas(64) int32_t cell[kBatchFragments];
+  constexpr int kLastInCell = LightGrid::kCellSizePx - 1;
+  static_assert((LightGrid::kCellSizePx & kLastInCell) == 0, "cells a power of two wide");
   for (int q = 0; q < batch.quad_count; ++q) {
     const int x = batch.quad_x_px[q], y = batch.quad_y_px[q];
-    const int first = lighting.grid.cell_at(x, y);
     int32_t* lanes = cell + q * kQuadLanes;
-    // Cells are rectangles: when the quad's corners share one, so do its four pixels.
-    if (first == lighting.grid.cell_at(x + 1, y + 1)) {
-      lanes[0] = lanes[1] = lanes[2] = lanes[3] = first;
+    // Cells are rectangles: when the quad's corners share one, so do its four pixels. At
+    // x, y >= 0, (x + 1, y + 1) is in (x, y)'s cell unless x or y is a cell's last column or
+    // row (a quad at even pixels never is): one lookup, with no second division.
+    if (x >= 0 && y >= 0 && (x & kLastInCell) != kLastInCell && (y & kLastInCell) != kLastInCell) {
+      lanes[0] = lanes[1] = lanes[2] = lanes[3] = lighting.grid.cell_at(x, y);
     } else {
       for (int lane = 0; lane < kQuadLanes; ++lane) lanes[lane] = lighting.grid.cell_at(x + (lane & 1), y + (lane >> 1));
     }

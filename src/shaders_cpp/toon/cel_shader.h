@@ -54,6 +54,8 @@ class CelShader final : public FragmentShader {
   // Per-fragment arithmetic and per-quad texture reads (lit, then shadow map, quad by quad).
   bool batches_across_triangles() const override { return true; }
 
+  // Colour (shade_color) and write_toon_normal_and_border fill every padded fragment.
+  int outputs_always_written() const override { return toon_output_count(kOutputs); }
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;
     batch_unit_normals(batch, ToonVertexShader::kViewNormal, batch.padded_fragment_count(), view_normal);

@@ -306,17 +306,6 @@ void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTa
       cell[k] = hn::Add(row_start[k / kTapsPerAxis], column[k % kTapsPerAxis]);
       z[k] = hn::GatherIndex(df, grid.linear_z, cell[k]);
     }
-    // The first tap of the smallest stored depth, the centre keeping ties.
-    VF nearest_depth = hn::GatherIndex(df, grid.depth, cell[kCentreTap]);
-    VI nearest = hn::Set(di, kCentreTap);
-    for (int k = 0; k < kTaps; ++k) {
-      if (k == kCentreTap) continue;
-      const VF d = hn::GatherIndex(df, grid.depth, cell[k]);
-      const hn::Mask<DF> closer = hn::Lt(d, nearest_depth);
-      nearest_depth = hn::IfThenElse(closer, d, nearest_depth);
-      nearest = hn::IfThenElse(hn::RebindMask(di, closer), hn::Set(di, k), nearest);
-    }
-    hn::Store(nearest, di, edges.nearest_tap + f);
     VF depth_limit = hn::Mul(hn::Set(df, test.depth_limit_scale), z[kCentreTap]);
     if (test.has_normal) {
       // grazing_cosine: the view ray through the pixel against the centre's normal.
@@ -354,6 +343,20 @@ void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTa
                                             dot3(gys[0], gys[1], gys[2], gys[0], gys[1], gys[2])));
       edge = hn::Or(edge, hn::Gt(magnitude, hn::Set(df, test.normal_threshold)));
     }
+    // The first tap of the smallest stored depth, the centre keeping ties: only an edge reads
+    // it (the border colour), so vectors without one skip its gathers.
+    VI nearest = hn::Set(di, kCentreTap);
+    if (!hn::AllFalse(df, edge)) {
+      VF nearest_depth = hn::GatherIndex(df, grid.depth, cell[kCentreTap]);
+      for (int k = 0; k < kTaps; ++k) {
+        if (k == kCentreTap) continue;
+        const VF d = hn::GatherIndex(df, grid.depth, cell[k]);
+        const hn::Mask<DF> closer = hn::Lt(d, nearest_depth);
+        nearest_depth = hn::IfThenElse(closer, d, nearest_depth);
+        nearest = hn::IfThenElse(hn::RebindMask(di, closer), hn::Set(di, k), nearest);
+      }
+    }
+    hn::Store(nearest, di, edges.nearest_tap + f);
     edges.depth_edge |= mask_bits(df, depth_edge) << f;
     edges.edge |= mask_bits(df, edge) << f;
   }

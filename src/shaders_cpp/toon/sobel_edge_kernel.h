@@ -75,8 +75,9 @@ struct EdgeTest {
   float min_grazing_cosine = 0.0f;
 };
 
-// Per fragment: the tap of the smallest depth, and whether depth, or else the normals, found
-// an edge. Bit f of the masks is fragment f.
+// Per fragment: whether depth, or else the normals, found an edge, and on an edge the tap of
+// the smallest depth (elsewhere it may be the centre tap: only edges read it). Bit f of the
+// masks is fragment f.
 struct FragmentEdges {
   alignas(64) int32_t nearest_tap[kBatchFragments];
   uint64_t depth_edge = 0;

@@ -151,6 +151,7 @@ SobelEdgeShader::SobelEdgeShader(const SobelEdgeParams& params) : p_(params) {
   if (p_.border) trace_planes_.border = sobel::TracePlane(border_);
   trace_planes_.prepare_tags();
   batch_lanes_ = sobel::BatchTracePlanes::fits_lanes(depth_, color_);
+  color_codes_ = rgba8_codes_format(color_);
 }
 
 glm::vec4 SobelEdgeShader::edge_colour(glm::vec4 scene, int border_x, int border_y,
@@ -212,7 +213,7 @@ glm::vec4 SobelEdgeShader::shade_one(glm::vec2 uv, sobel::TapTrace& trace) const
   return compose(tx, ty, color_x, color_y, edge, nearest, trace);
 }
 
-void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count, uint64_t active,
+bool SobelEdgeShader::shade_fragments(const float* u, const float* v, int count, uint64_t active,
                                       float (&colour)[4][kBatchFragments]) const {
   const auto store = [&colour](int f, glm::vec4 c) {
     for (int ch = 0; ch < 4; ++ch) colour[ch][f] = c[ch];
@@ -223,13 +224,13 @@ void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count,
   sobel::tap_texels(u, v, count, active, layout_, taps);
   const int64_t box_width = int64_t{taps.x1} - taps.x0 + 1;
   const int64_t box_height = int64_t{taps.y1} - taps.y0 + 1;
-  if (active == 0) return;
+  if (active == 0) return false;
   if (box_width * box_height > sobel::kMaxGridTexels) {
     for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
       const int f = std::countr_zero(rest);
       store(f, shade_one({u[f], v[f]}, trace));
     }
-    return;
+    return false;
   }
   sobel::NeighbourhoodGrid grid;
   grid.x0 = taps.x0;
@@ -250,7 +251,7 @@ void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count,
       store(f, edge_colour(scene, taps.x[tap % kTapsPerAxis][f], taps.y[tap / kTapsPerAxis][f],
                            nullptr));
     }
-    return;
+    return (active & edges.edge) == 0;
   }
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
     const int f = std::countr_zero(rest);
@@ -261,6 +262,7 @@ void SobelEdgeShader::shade_fragments(const float* u, const float* v, int count,
     store(f, compose(tx, ty, taps.color_x[f], taps.color_y[f], (edges.edge >> f) & 1u,
                      edges.nearest_tap[f], trace));
   }
+  return (active & edges.edge) == 0;
 }
 
 glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
@@ -279,9 +281,12 @@ glm::vec4 SobelEdgeShader::shade_pixel(glm::vec2 uv) const {
 void SobelEdgeShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
   // Fragments in batch order are quads in order, lanes in order: the trace order of shading
   // the quads one at a time.
-  shade_fragments(batch.varyings[FullScreenVertexShader::kUv],
-                  batch.varyings[FullScreenVertexShader::kUv + 1], batch.padded_fragment_count(),
-                  batch.active_mask(), out.color[0]);
+  const bool edge_free = shade_fragments(
+      batch.varyings[FullScreenVertexShader::kUv], batch.varyings[FullScreenVertexShader::kUv + 1],
+      batch.padded_fragment_count(), batch.active_mask(), out.color[0]);
+  // Without an edge every written lane is a scene texel and every other lane the batcher's
+  // zero (code 0): all decoded codes (BatchOutput::output0_codes_of).
+  if (edge_free) out.output0_codes_of = color_codes_;
 }
 
 }  // namespace ontile

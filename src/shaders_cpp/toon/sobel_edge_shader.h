@@ -3,6 +3,7 @@
 // either gradient is large. Reads the G-buffer as textures (nearest, clamp): a separate pass.
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -103,6 +104,7 @@ class SobelEdgeShader final : public FragmentShader {
   explicit SobelEdgeShader(const SobelEdgeParams& params);
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override;
   uint32_t varyings_read() const override { return 3u << FullScreenVertexShader::kUv; }  // uv
+  int outputs_always_written() const override { return 1; }  // colour, every path
 
   // The output colour at one uv (what shade_batch() writes for a fragment), with the same texel
   // trace.
@@ -111,7 +113,9 @@ class SobelEdgeShader final : public FragmentShader {
  private:
   // Shades fragments [0, count) (count a multiple of 16, at most kBatchFragments) at
   // (u[f], v[f]) whose bit is set in `active`, into colour[channel][f], recording the trace.
-  void shade_fragments(const float* u, const float* v, int count, uint64_t active,
+  // Returns true when no such fragment is on an edge (each got its scene texel as loaded),
+  // false when one may be.
+  bool shade_fragments(const float* u, const float* v, int count, uint64_t active,
                        float (&colour)[4][kBatchFragments]) const;
   // One fragment's taps read one by one (batches whose neighbourhood exceeds the grid).
   glm::vec4 shade_one(glm::vec2 uv, sobel::TapTrace& trace) const;
@@ -136,6 +140,9 @@ class SobelEdgeShader final : public FragmentShader {
   sobel::EdgeTest edge_test_;
   sobel::BatchTracePlanes trace_planes_;
   bool batch_lanes_ = false;  // trace and colour reads of grid batches on SIMD lanes
+  // The RGBA8 format whose decoded codes the scene texels are, if any: a batch with no edge
+  // writes only such values, which the batcher then need not quantise into that format.
+  std::optional<PixelFormat> color_codes_;
 };
 
 }  // namespace ontile

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <bit>
+#include <cstring>
 
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
 
@@ -118,6 +119,7 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
   alignas(64) uint32_t granule[kTraceSlots][kBatchFragments];
   alignas(64) uint32_t kept[kBatchFragments];
   alignas(64) uint32_t pattern[kBatchFragments];  // read pattern index, kReadPatterns for none
+  uint64_t pattern0 = 0;  // bit f: fragment f has read pattern 0
   using P = BatchTracePlanes;
   const PlaneLanes32 depth(du, planes.depth), normal(du, planes.normal), color(du, planes.color);
   const bool normal_meets_depth = planes.tag[P::kNormal] == planes.tag[P::kDepth];
@@ -180,6 +182,11 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                                   hn::Set(du, static_cast<uint32_t>(p)), pattern_of);
     }
     hn::Store(pattern_of, du, pattern + f);
+    uint8_t bytes[8] = {};
+    hn::StoreMaskBits(du, hn::Eq(pattern_of, hn::Zero(du)), bytes);
+    uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof(bits));
+    pattern0 |= (lanes >= 64 ? bits : bits & ((uint64_t{1} << lanes) - 1)) << f;
   }
   // The border read of fragments on an edge, at the nearest tap's texel.
   const uint64_t* const untag = planes.slot_untag;
@@ -196,6 +203,7 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
         kept[f] |= 1u;  // slot kBorderSlot
         // Only the depth-edge pattern has a bordered twin; the others have no border read.
         pattern[f] = pattern[f] == kDepthEdgePattern ? kDepthEdgePattern + 1 : kReadPatterns;
+        pattern0 &= ~(uint64_t{1} << f);
       }
     }
   }
@@ -205,6 +213,11 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
   // the next fragments overwrite).
   const uint64_t untag_depth = untag[0], untag_color = untag[kColorSlot];
   const uint32_t* const table = &granule[0][0];
+  // Fragments of read pattern 0 (bit f). Its last read is the colour texel: where the colour
+  // and depth planes have different tags their granules never meet, so the first read of the
+  // pattern-0 fragments after one (in a run) is always new: the run is written with no
+  // compares, the first of the run compared with the read before it.
+  if (planes.tag[P::kDepth] == planes.tag[P::kColor]) pattern0 = 0;
   int written = 0;
   uint64_t last = last_granule;
   for (uint64_t rest = active; rest != 0; rest &= rest - 1) {
@@ -212,6 +225,21 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
     const uint64_t first = untag_depth + granule[0][f];
     const uint32_t p = pattern[f];
     if (p == 0 && first != last) {
+      // This fragment and the pattern-0 fragments after it up to the next other one.
+      const uint64_t others = rest & ~pattern0;
+      const uint64_t run = others == 0 ? rest : rest & ((others & (0 - others)) - 1);
+      if (pattern0 >> f & 1u) {
+        int f_last = f;
+        for (uint64_t in_run = run; in_run != 0; in_run &= in_run - 1) {
+          f_last = std::countr_zero(in_run);
+          gather_reads(table, f_last, kPatternCells.offset[0], planes.pattern_untag[0],
+                       kPatternCells.reads[0], out + written);
+          written += kPatternCells.reads[0];
+        }
+        last = untag_color + granule[kColorSlot][f_last];
+        rest &= ~run | (uint64_t{1} << f_last);  // the loop's step drops f_last
+        continue;
+      }
       gather_reads(table, f, kPatternCells.offset[0], planes.pattern_untag[0],
                    kPatternCells.reads[0], out + written);
       written += kPatternCells.reads[0];

@@ -77,11 +77,13 @@ inline void write_toon_normal_and_border(const FragmentBatch& batch, BatchOutput
     for (int f = 0; f < n; ++f) normal[3][f] = 1.0f;
   }
   if constexpr ((kOutputs & ToonOutput::kBorder) != 0u) {
-    auto& border = out.color[toon_output_slot(kOutputs, ToonOutput::kBorder)];
+    constexpr int kSlot = toon_output_slot(kOutputs, ToonOutput::kBorder);
+    auto& border = out.color[kSlot];
     for (int c = 0; c < 4; ++c) {
       const float value = params.border_color[c];  // glm's operator[] is a switch: read it once
       for (int f = 0; f < n; ++f) border[c][f] = value;
     }
+    out.uniform_outputs |= 1u << kSlot;  // the material's colour in every fragment
   }
 }
 

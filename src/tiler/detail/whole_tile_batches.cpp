@@ -107,17 +107,25 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   b.primitive_id = primitive_id;
   b.sample = -1;
   b.fetch = ctx.fetch;
-  // As shade_invocation: unwritten outputs are zero; opaque outputs quantised per batch.
-  for (int k = 0; k < b.color_output_count; ++k) {
+  // As shade_invocation: unwritten outputs are zero (those the functor always writes in full
+  // need no clearing: every lane of a whole batch is active); opaque outputs quantised per batch.
+  for (int k = ctx.draw.fragment_shader->outputs_always_written(); k < b.color_output_count; ++k) {
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
   out.output0_codes_of.reset();
+  out.uniform_outputs = 0;
   ctx.draw.fragment_shader->shade_batch(b, out);
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   for (int k = 0; k < b.color_output_count; ++k) {
     const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
     if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
+    if ((out.uniform_outputs >> k) & 1u) {
+      // Quantising is per value: one pixel's result is every pixel's.
+      quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3], 1);
+      for (int c = 0; c < 4; ++c) std::fill_n(out.color[k][c] + 1, kBatchFragments - 1, out.color[k][c][0]);
+      continue;
+    }
     quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                     kBatchFragments);
   }
