@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <random>
@@ -17,7 +18,9 @@
 
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
+#include "memory/texture_replay_stream.h"
 #include "tiler/detail/trace_buffers.h"
+#include "util/parallel_for.h"
 #include "tiler/reference_lru.h"
 
 namespace ontile {
@@ -117,29 +120,37 @@ std::vector<std::vector<uint64_t>> sampled_tiles() {
   return tiles;
 }
 
-// All tiles' granules in one buffer, as a thread records several tiles, and their traces.
-struct PackedTraces {
-  std::vector<uint64_t> buffer;
-  std::vector<TileTrace> traces;
-};
-
-PackedTraces pack(const std::vector<std::vector<uint64_t>>& tiles) {
-  PackedTraces p;
-  for (const auto& tile : tiles) p.buffer.insert(p.buffer.end(), tile.begin(), tile.end());
-  size_t begin = 0;
-  for (const auto& tile : tiles) {
-    TileTrace t;
-    t.texture_granules = {&p.buffer, begin, begin + tile.size()};
-    begin += tile.size();
-    p.traces.push_back(std::move(t));
-  }
-  return p;
+// One trace per tile, each tile's granules in a vector of its own (as tiles record them).
+std::vector<TileTrace> traces_of(const std::vector<std::vector<uint64_t>>& tiles) {
+  std::vector<TileTrace> traces(tiles.size());
+  for (size_t t = 0; t < tiles.size(); ++t) traces[t].texture_granules = tiles[t];
+  return traces;
 }
 
 TextureTraffic replay_with_threads(TextureCache& cache, const std::vector<TileTrace>& traces,
                                    int threads, TextureReplayDetail* detail = nullptr) {
   tbb::task_arena arena(threads);
   return arena.execute([&] { return replay_texture_traces(cache, traces, detail); });
+}
+
+// The replay streamed as a pass runs it: `threads` workers report the tiles recorded in a
+// shuffled order (tiles complete out of order), then finish() replays what is left.
+TextureTraffic replay_streamed(TextureCache& cache, const std::vector<TileTrace>& traces,
+                               int threads, uint64_t seed, TextureReplayDetail& detail) {
+  std::vector<size_t> order(traces.size());
+  for (size_t t = 0; t < order.size(); ++t) order[t] = t;
+  std::mt19937_64 rng(seed);
+  // Mostly in order with local swaps, as tiles taken in index order complete, and a few far moves.
+  for (size_t t = 0; t + 1 < order.size(); ++t) {
+    const size_t reach = rng() % 16 == 0 ? order.size() - t : 4;
+    std::swap(order[t], order[t + rng() % std::min(reach, order.size() - t)]);
+  }
+  tbb::task_arena arena(threads);
+  return arena.execute([&] {
+    TextureReplayStream stream(cache, traces, detail);
+    ontile::parallel_for(size_t{0}, order.size(), [&](size_t i) { stream.tile_recorded(order[i]); });
+    return stream.finish();
+  });
 }
 
 void expect_equal(const TextureTraffic& a, const TextureTraffic& b, const std::string& what) {
@@ -159,7 +170,7 @@ void expect_equal(const TextureReplayDetail& a, const TextureReplayDetail& b,
 // at each thread count, against the reference: totals, misses per tile and per region.
 void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& first,
                                      const std::vector<std::vector<uint64_t>>& second) {
-  const PackedTraces a = pack(first), b = pack(second);
+  const std::vector<TileTrace> a = traces_of(first), b = traces_of(second);
   for (const TextureCacheConfig& c : configs()) {
     ReferenceLru reference(c);
     TextureReplayDetail expected_detail_a, expected_detail_b;
@@ -174,12 +185,20 @@ void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& f
       TextureCache cache(c);
       const std::string what = name_of(c) + ", " + std::to_string(threads) + " threads";
       TextureReplayDetail detail_a, detail_b;
-      expect_equal(replay_with_threads(cache, a.traces, threads, &detail_a), expected_a,
+      expect_equal(replay_with_threads(cache, a, threads, &detail_a), expected_a,
                    what + ", pass 1");
       expect_equal(detail_a, expected_detail_a, what + ", pass 1");
-      expect_equal(replay_with_threads(cache, b.traces, threads, &detail_b), expected_b,
+      expect_equal(replay_with_threads(cache, b, threads, &detail_b), expected_b,
                    what + ", pass 2");
       expect_equal(detail_b, expected_detail_b, what + ", pass 2");
+      TextureCache streamed_cache(c);
+      TextureReplayDetail streamed_a, streamed_b;
+      expect_equal(replay_streamed(streamed_cache, a, threads, threads, streamed_a), expected_a,
+                   what + ", streamed pass 1");
+      expect_equal(streamed_a, expected_detail_a, what + ", streamed pass 1");
+      expect_equal(replay_streamed(streamed_cache, b, threads, threads + 100, streamed_b), expected_b,
+                   what + ", streamed pass 2");
+      expect_equal(streamed_b, expected_detail_b, what + ", streamed pass 2");
     }
   }
 }
@@ -220,20 +239,31 @@ TEST(TextureCacheLru, SampledTracesReplayAsThePlainLruAtAnyThreadCount) {
       tiles, std::vector<std::vector<uint64_t>>(tiles.rbegin(), tiles.rend()));
 }
 
-TEST(TraceBuffersLease, LeasesHeldTogetherNeverShareABufferAndStartEmpty) {
-  std::vector<uint64_t>* first_buffer = nullptr;
+TEST(TileTracesLease, LeasesHeldTogetherNeverShareTracesAndStartEmpty) {
+  TileTracesLease held(12);
+  held.traces()[3].texture_granules.assign(10, 5);
   {
-    const TraceBuffersLease a;
-    const TraceBuffersLease b;
-    EXPECT_NE(&a.local(), &b.local());
-    a.local().assign(1000, 7);
-    first_buffer = &a.local();
+    TileTracesLease released(12);
+    ASSERT_EQ(released.traces().size(), 12u);
+    EXPECT_TRUE(released.traces()[3].texture_granules.empty());  // not the held lease's set
+    released.traces()[3].texture_granules.assign(1000, 7);
+    released.traces()[3].fragments.resize(5);
   }
-  const TraceBuffersLease again;  // may reuse a's buffers: emptied, capacity kept
-  EXPECT_TRUE(again.local().empty());
-  if (&again.local() == first_buffer) {
-    EXPECT_GE(again.local().capacity(), 1000u);
+  // A lease of the same tile count takes the released set back: emptied, capacity kept, and
+  // never the set still held.
+  TileTracesLease again(12);
+  ASSERT_EQ(again.traces().size(), 12u);
+  size_t largest_capacity = 0;
+  for (const TileTrace& trace : again.traces()) {
+    EXPECT_TRUE(trace.texture_granules.empty());
+    EXPECT_TRUE(trace.fragments.empty());
+    largest_capacity = std::max(largest_capacity, trace.texture_granules.capacity());
   }
+  EXPECT_GE(largest_capacity, 1000u);
+  EXPECT_NE(again.traces()[3].texture_granules.data(), held.traces()[3].texture_granules.data());
+  EXPECT_EQ(held.traces()[3].texture_granules, std::vector<uint64_t>(10, 5));
+  TileTracesLease other_size(5);
+  EXPECT_EQ(other_size.traces().size(), 5u);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The pool of per-thread texel-trace buffers (see trace_buffers.h).
+// The pool of tile traces (see trace_buffers.h).
 #include "tiler/detail/trace_buffers.h"
 
 #include <mutex>
@@ -9,7 +9,7 @@ namespace {
 
 struct Pool {
   std::mutex mutex;
-  std::vector<std::unique_ptr<ThreadTraceBuffers>> free;
+  std::vector<std::vector<TileTrace>> free;
 };
 
 Pool& pool() {
@@ -19,24 +19,32 @@ Pool& pool() {
 
 }  // namespace
 
-TraceBuffersLease::TraceBuffersLease() {
+TileTracesLease::TileTracesLease(size_t tile_count) {
   {
     const std::lock_guard<std::mutex> lock(pool().mutex);
-    if (!pool().free.empty()) {
-      buffers_ = std::move(pool().free.back());
-      pool().free.pop_back();
+    std::vector<std::vector<TileTrace>>& free = pool().free;
+    if (!free.empty()) {
+      size_t pick = free.size() - 1;
+      for (size_t i = 0; i < free.size(); ++i) {
+        if (free[i].size() == tile_count) pick = i;
+      }
+      traces_ = std::move(free[pick]);
+      free.erase(free.begin() + static_cast<std::ptrdiff_t>(pick));
     }
   }
-  if (!buffers_) buffers_ = std::make_unique<ThreadTraceBuffers>();
-  for (std::vector<uint64_t>& buffer : *buffers_) buffer.clear();
+  traces_.resize(tile_count);
+  for (TileTrace& trace : traces_) {
+    trace.texture_granules.clear();
+    trace.fragments.clear();
+  }
 }
 
-TraceBuffersLease::~TraceBuffersLease() {
+TileTracesLease::~TileTracesLease() {
   const std::lock_guard<std::mutex> lock(pool().mutex);
   try {
-    pool().free.push_back(std::move(buffers_));
+    pool().free.push_back(std::move(traces_));
   } catch (const std::bad_alloc&) {
-    // No room to keep them: the buffers are freed instead, the next lease makes new ones.
+    // No room to keep them: the traces are freed instead, the next lease makes new ones.
   }
 }
 

@@ -1,32 +1,28 @@
-// Per-thread buffers for the texel traces of a pass's tiles: every tile appends to its thread's
-// buffer (tile_trace.h's GranuleRange names its part), and the buffers' memory is reused by
-// later passes and frames, so recording a trace allocates only while a buffer outgrows itself.
+// The traces of a pass's tiles (memory/tile_trace.h), taken from a process-wide pool: each tile
+// records into vectors of its own, and their capacity is reused by later passes and frames, so
+// recording a trace allocates only while a tile's trace outgrows what that tile had before.
 #pragma once
-#include <cstdint>
-#include <memory>
+#include <cstddef>
 #include <vector>
 
-#include <tbb/enumerable_thread_specific.h>
+#include "memory/tile_trace.h"
 
 namespace ontile {
 
-using ThreadTraceBuffers = tbb::enumerable_thread_specific<std::vector<uint64_t>>;
-
-// While alive, holds one set of per-thread buffers taken from a process-wide pool, all emptied
-// (capacity kept). Passes running at the same time (several contexts) take different sets.
-// Returned to the pool on destruction, with their memory: the pool keeps what the largest
-// traces needed.
-class TraceBuffersLease {
+// While alive, holds `tile_count` empty traces (capacity kept) that no other lease holds, so
+// passes running at the same time (several contexts) never share one. Given back to the pool on
+// destruction with their memory: the pool keeps what the largest traces needed. A set whose size
+// is the pass's tile count is preferred, so a tile usually gets back its own vectors.
+class TileTracesLease {
  public:
-  TraceBuffersLease();
-  ~TraceBuffersLease();
-  TraceBuffersLease(const TraceBuffersLease&) = delete;
-  TraceBuffersLease& operator=(const TraceBuffersLease&) = delete;
-  // The calling thread's buffer.
-  std::vector<uint64_t>& local() const { return buffers_->local(); }
+  explicit TileTracesLease(size_t tile_count);
+  ~TileTracesLease();
+  TileTracesLease(const TileTracesLease&) = delete;
+  TileTracesLease& operator=(const TileTracesLease&) = delete;
+  std::vector<TileTrace>& traces() { return traces_; }
 
  private:
-  std::unique_ptr<ThreadTraceBuffers> buffers_;
+  std::vector<TileTrace> traces_;
 };
 
 }  // namespace ontile
