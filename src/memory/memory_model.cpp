@@ -26,9 +26,10 @@ TileRect PassMemoryDesc::tile_rect(int tile) const {
 
 MemoryModel::MemoryModel(const MemoryConfig& config) : config_(config), texture_cache_(config.texture_cache) {}
 
-std::unique_ptr<TextureReplayStream> MemoryModel::texel_replay(const std::vector<TileTrace>& traces,
+std::unique_ptr<TextureReplayStream> MemoryModel::texel_replay(std::vector<TileTrace>& traces,
                                                                TextureReplayDetail& detail) {
-  return std::make_unique<TextureReplayStream>(texture_cache_, traces, detail);
+  return std::make_unique<TextureReplayStream>(texture_cache_, traces, detail,
+                                               TextureReplayStream::GiveBackBuffers{});
 }
 
 std::unique_ptr<MemoryModel> make_memory_model(const MemoryConfig& config) {

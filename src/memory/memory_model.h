@@ -73,7 +73,8 @@ class MemoryModel {
 
   // Every tile's texel granules through the frame's texture cache (texture_cache.h), replayed
   // while the tiles run: tile_recorded as each tile ends, then finish (texture_replay_stream.h).
-  std::unique_ptr<TextureReplayStream> texel_replay(const std::vector<TileTrace>& traces,
+  // The tiles' granule buffers go back to their pool (granule_buffer_pool.h) once replayed.
+  std::unique_ptr<TextureReplayStream> texel_replay(std::vector<TileTrace>& traces,
                                                     TextureReplayDetail& detail);
   const TextureCacheConfig& texture_cache_config() const { return texture_cache_.config(); }
 

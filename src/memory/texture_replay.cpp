@@ -22,6 +22,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "memory/granule_buffer_pool.h"
 #include "memory/replay_scratch.h"
 #include "memory/texture_cache.h"
 #include "memory/texture_replay_kernel.h"
@@ -197,12 +198,23 @@ void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
 
 TextureReplayStream::TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
                                          TextureReplayDetail& detail)
+    : TextureReplayStream(cache, traces, nullptr, detail) {}
+
+TextureReplayStream::TextureReplayStream(TextureCache& cache, std::vector<TileTrace>& traces,
+                                         TextureReplayDetail& detail, GiveBackBuffers)
+    : TextureReplayStream(cache, traces, &traces, detail) {}
+
+TextureReplayStream::TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
+                                         std::vector<TileTrace>* buffers_to_give_back,
+                                         TextureReplayDetail& detail)
     : cache_(cache),
       traces_(traces),
+      buffers_to_give_back_(buffers_to_give_back),
       detail_(detail),
       observer_(observer.load()),
       threads_(std::max(1, tbb::this_task_arena::max_concurrency())),
       group_bits_(group_bits_for(cache.sets(), threads_)),
+      give_back_when_replayed_(buffers_to_give_back != nullptr && group_bits_ == 0 && observer_ == nullptr),
       recorded_(new std::atomic<bool>[traces.size()]),
       regions_(place_region, &cache) {
   for (size_t t = 0; t < traces.size(); ++t) recorded_[t].store(false, std::memory_order_relaxed);
@@ -219,6 +231,7 @@ void TextureReplayStream::replay_tile(size_t tile) {
   const uint64_t tile_misses = replay_granules(cache_.sets(), regions_, granules.data(), granules.size());
   detail_.misses_per_tile[tile] = tile_misses;
   misses_ += tile_misses;
+  if (give_back_when_replayed_) give_back_granule_buffer((*buffers_to_give_back_)[tile].texture_granules);
 }
 
 bool TextureReplayStream::next_is_recorded() const {
@@ -251,6 +264,9 @@ TextureTraffic TextureReplayStream::finish() {
     traffic = replay_parallel(cache_, traces_, threads_, group_bits_, detail_);
   }
   if (observer_ != nullptr) observer_->after_replay(cache_, traces_, traffic);
+  if (buffers_to_give_back_ != nullptr) {
+    for (TileTrace& trace : *buffers_to_give_back_) give_back_granule_buffer(trace.texture_granules);
+  }
   return traffic;
 }
 

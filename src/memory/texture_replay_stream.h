@@ -23,8 +23,15 @@ class TextureReplayObserver;
 // its tile ran, so whichever thread holds the replay may read any recorded tile.
 class TextureReplayStream {
  public:
+  // Replays `traces` and leaves them as they are (replay_texture_traces, tests).
   TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
                       TextureReplayDetail& detail);
+  // Also gives every tile's granules back to the pool (granule_buffer_pool.h): each as soon as it
+  // is replayed when nothing reads them later (a serial replay, no replay observer), the others
+  // in finish(), so a pass's traces circulate through a few warm buffers.
+  struct GiveBackBuffers {};
+  TextureReplayStream(TextureCache& cache, std::vector<TileTrace>& traces,
+                      TextureReplayDetail& detail, GiveBackBuffers);
   ~TextureReplayStream();
   TextureReplayStream(const TextureReplayStream&) = delete;
   TextureReplayStream& operator=(const TextureReplayStream&) = delete;
@@ -36,15 +43,19 @@ class TextureReplayStream {
   TextureTraffic finish();
 
  private:
+  TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
+                      std::vector<TileTrace>* buffers_to_give_back, TextureReplayDetail& detail);
   void replay_tile(size_t tile);
   bool next_is_recorded() const;
 
   TextureCache& cache_;
   const std::vector<TileTrace>& traces_;
+  std::vector<TileTrace>* const buffers_to_give_back_;  // traces_, when its buffers go back
   TextureReplayDetail& detail_;
   TextureReplayObserver* const observer_;
   const int threads_;
   const int group_bits_;  // > 0: replayed in finish(), in parallel by 2^group_bits_ set groups
+  const bool give_back_when_replayed_;
   std::unique_ptr<std::atomic<bool>[]> recorded_;
   // The replay token: the thread that sets it is the only one to replay and to move next_tile_.
   std::atomic<bool> replaying_{false};

@@ -26,9 +26,9 @@ struct FragmentAccess {
 
 struct TileTrace {
   // The texture granules the tile's fetches touched (byte address / 64, consecutive repeats
-  // removed), in the tile's own vector: only its tile writes it, so once the tile ran any thread
+  // removed), in the tile's own buffer: only its tile writes it, so once the tile ran any thread
   // may read it while other tiles still record (the streamed replay, texture_replay_stream.h).
-  // The pass's traces are pooled (tiler/detail/trace_buffers.h), so recording reuses capacity.
+  // Buffers come from a pool and go back to it once replayed (memory/granule_buffer_pool.h).
   std::vector<uint64_t> texture_granules;
   std::vector<FragmentAccess> fragments;  // filled only when fragment recording is on
 };

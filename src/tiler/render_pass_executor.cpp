@@ -10,12 +10,12 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
+#include "memory/granule_buffer_pool.h"
 #include "raster/sample_pattern.h"
 #include "raster/texture.h"
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/detail/parameter_reads.h"
 #include "tiler/detail/tile_executor.h"
-#include "tiler/detail/trace_buffers.h"
 #include "util/error.h"
 #include "util/parallel_for.h"
 
@@ -311,8 +311,7 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
   const int attachment_count = static_cast<int>(pass.attachments.size());
-  TileTracesLease trace_lease(static_cast<size_t>(grid.tile_count()));
-  const std::vector<TileTrace>& traces = trace_lease.traces();
+  std::vector<TileTrace> traces(grid.tile_count());
   report.tile_stats.resize(grid.tile_count());
   std::atomic<uint32_t> tiles_started{0};
   TextureReplayDetail texture_detail;
@@ -324,8 +323,9 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
     TileCounters tile_counters;
-    execute_tile(pass, params, tile, memory, tile_counters, trace_lease.traces()[tile], external,
-                 config.hierarchical_z);
+    TileTrace& trace = traces[tile];
+    trace.texture_granules = take_granule_buffer();
+    execute_tile(pass, params, tile, memory, tile_counters, trace, external, config.hierarchical_z);
     texture_replay->tile_recorded(static_cast<size_t>(tile));
     counters.local().add(tile_counters);
     record_tile_counters(tile_counters, params, tile, stats);

@@ -19,7 +19,7 @@
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "memory/texture_replay_stream.h"
-#include "tiler/detail/trace_buffers.h"
+#include "memory/granule_buffer_pool.h"
 #include "util/parallel_for.h"
 #include "tiler/reference_lru.h"
 
@@ -239,31 +239,39 @@ TEST(TextureCacheLru, SampledTracesReplayAsThePlainLruAtAnyThreadCount) {
       tiles, std::vector<std::vector<uint64_t>>(tiles.rbegin(), tiles.rend()));
 }
 
-TEST(TileTracesLease, LeasesHeldTogetherNeverShareTracesAndStartEmpty) {
-  TileTracesLease held(12);
-  held.traces()[3].texture_granules.assign(10, 5);
-  {
-    TileTracesLease released(12);
-    ASSERT_EQ(released.traces().size(), 12u);
-    EXPECT_TRUE(released.traces()[3].texture_granules.empty());  // not the held lease's set
-    released.traces()[3].texture_granules.assign(1000, 7);
-    released.traces()[3].fragments.resize(5);
+TEST(GranuleBufferPool, GivenBackBuffersComeBackEmptyWithTheirCapacity) {
+  std::vector<uint64_t> held = take_granule_buffer();
+  held.assign(10, 5);
+  std::vector<uint64_t> given = take_granule_buffer();
+  given.assign(1000, 7);
+  const uint64_t* memory = given.data();
+  give_back_granule_buffer(given);
+  EXPECT_EQ(given.capacity(), 0u);  // the pool holds its memory now
+  const std::vector<uint64_t> again = take_granule_buffer();  // the last one given back
+  EXPECT_TRUE(again.empty());
+  EXPECT_GE(again.capacity(), 1000u);
+  EXPECT_EQ(again.data(), memory);
+  EXPECT_EQ(held, std::vector<uint64_t>(10, 5));  // a buffer still taken is never handed out
+}
+
+// The replay of a pass gives every tile's buffer back, replayed in streaming or in finish().
+TEST(GranuleBufferPool, AStreamedReplayGivesEveryTileBufferBack) {
+  const std::vector<std::vector<uint64_t>> tiles = random_tiles(3, 40);
+  for (int threads : {1, 2, 7}) {
+    std::vector<TileTrace> traces = traces_of(tiles);
+    TextureCache cache(config(64, 64, 4));
+    TextureReplayDetail detail;
+    tbb::task_arena arena(threads);
+    const TextureTraffic traffic = arena.execute([&] {
+      TextureReplayStream stream(cache, traces, detail, TextureReplayStream::GiveBackBuffers{});
+      ontile::parallel_for(size_t{0}, traces.size(), [&](size_t t) { stream.tile_recorded(t); });
+      return stream.finish();
+    });
+    TextureCache reference_cache(config(64, 64, 4));
+    const std::vector<TileTrace> kept = traces_of(tiles);
+    expect_equal(traffic, replay_texture_traces(reference_cache, kept), std::to_string(threads) + " threads");
+    for (const TileTrace& trace : traces) EXPECT_EQ(trace.texture_granules.capacity(), 0u);
   }
-  // A lease of the same tile count takes the released set back: emptied, capacity kept, and
-  // never the set still held.
-  TileTracesLease again(12);
-  ASSERT_EQ(again.traces().size(), 12u);
-  size_t largest_capacity = 0;
-  for (const TileTrace& trace : again.traces()) {
-    EXPECT_TRUE(trace.texture_granules.empty());
-    EXPECT_TRUE(trace.fragments.empty());
-    largest_capacity = std::max(largest_capacity, trace.texture_granules.capacity());
-  }
-  EXPECT_GE(largest_capacity, 1000u);
-  EXPECT_NE(again.traces()[3].texture_granules.data(), held.traces()[3].texture_granules.data());
-  EXPECT_EQ(held.traces()[3].texture_granules, std::vector<uint64_t>(10, 5));
-  TileTracesLease other_size(5);
-  EXPECT_EQ(other_size.traces().size(), 5u);
 }
 
 }  // namespace
