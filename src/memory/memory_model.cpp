@@ -26,8 +26,10 @@ TileRect PassMemoryDesc::tile_rect(int tile) const {
 
 MemoryModel::MemoryModel(const MemoryConfig& config) : config_(config), texture_cache_(config.texture_cache) {}
 
-TextureTraffic MemoryModel::texel_accesses(const std::vector<TileTrace>& traces, TextureReplayDetail* detail) {
-  return replay_texture_traces(texture_cache_, traces, detail);
+std::unique_ptr<TextureReplayStream> MemoryModel::texel_replay(std::vector<TileTrace>& traces,
+                                                               TextureReplayDetail& detail) {
+  return std::make_unique<TextureReplayStream>(texture_cache_, traces, detail,
+                                               TextureReplayStream::GiveBackBuffers{});
 }
 
 std::unique_ptr<MemoryModel> make_memory_model(const MemoryConfig& config) {

@@ -10,6 +10,7 @@
 #include "memory/imr_model.h"
 #include "memory/pass_memory.h"
 #include "memory/texture_cache.h"
+#include "memory/texture_replay_stream.h"
 #include "memory/tile_trace.h"
 #include "memory/transaction_elimination.h"
 
@@ -40,9 +41,9 @@ struct MemoryConfig {
 };
 
 // One frame's external memory. Pass by pass: begin_pass, then the tile events (from worker
-// threads, each tile by one thread), then, after all tiles ran and in tile-index order, the
-// texel accesses, fragments and parameter-buffer traffic, then end_pass. The texture cache keeps
-// its contents from pass to pass within the frame.
+// threads, each tile by one thread; the texel accesses replayed in tile-index order as tiles
+// complete), then, after all tiles ran and in tile-index order, the fragments and parameter-buffer
+// traffic, then end_pass. The texture cache keeps its contents from pass to pass within the frame.
 class MemoryModel {
  public:
   explicit MemoryModel(const MemoryConfig& config);
@@ -70,8 +71,11 @@ class MemoryModel {
   // The pass's attachment traffic.
   virtual PassAttachmentTraffic end_pass() = 0;
 
-  // Every tile's texel granules through the frame's texture cache (texture_cache.h).
-  TextureTraffic texel_accesses(const std::vector<TileTrace>& traces, TextureReplayDetail* detail);
+  // Every tile's texel granules through the frame's texture cache (texture_cache.h), replayed
+  // while the tiles run: tile_recorded as each tile ends, then finish (texture_replay_stream.h).
+  // The tiles' granule buffers go back to their pool (granule_buffer_pool.h) once replayed.
+  std::unique_ptr<TextureReplayStream> texel_replay(std::vector<TileTrace>& traces,
+                                                    TextureReplayDetail& detail);
   const TextureCacheConfig& texture_cache_config() const { return texture_cache_.config(); }
 
  protected:

@@ -1,7 +1,8 @@
 // The replay of a pass's texture traces through the texture-cache model (texture_cache.h), with
 // the counts of a serial per-access replay in tile-index order at any thread count.
 //
-// Serial: one pass over the tiles, regions placed as they are met (first-use order).
+// Serial (TextureReplayStream, texture_replay_stream.h): one pass over the tiles while they are
+// recorded, regions placed as they are met (first-use order).
 // Parallel: a set's hits and misses depend only on the order of its own accesses, so the sets are
 // split into G = 2^b groups, replayed by different threads, each seeing its accesses in tile
 // order. The group of a granule is the low b bits of its line, which are also bits of its set
@@ -21,10 +22,12 @@
 
 #include <tbb/task_arena.h>
 
+#include "memory/granule_buffer_pool.h"
 #include "memory/replay_scratch.h"
 #include "memory/texture_cache.h"
 #include "memory/texture_replay_kernel.h"
 #include "memory/texture_replay_observer.h"
+#include "memory/texture_replay_stream.h"
 #include "util/parallel_for.h"
 
 namespace ontile {
@@ -50,21 +53,6 @@ TextureTraffic traffic_of(uint64_t accesses, uint64_t misses, const TextureCache
   traffic.misses = misses;
   traffic.bytes_read = misses * cache.config().line_bytes;
   return traffic;
-}
-
-TextureTraffic replay_serial(TextureCache& cache, const std::vector<TileTrace>& traces,
-                             TextureReplayDetail& detail) {
-  RegionTable regions(place_region, &cache);
-  uint64_t accesses = 0, misses = 0;
-  for (size_t t = 0; t < traces.size(); ++t) {
-    const std::span<const uint64_t> granules = traces[t].texture_granules.granules();
-    accesses += granules.size();
-    const uint64_t tile_misses = replay_granules(cache.sets(), regions, granules.data(), granules.size());
-    detail.misses_per_tile[t] = tile_misses;
-    misses += tile_misses;
-  }
-  regions.add_misses_to(detail.misses_per_region);
-  return traffic_of(accesses, misses, cache);
 }
 
 // Splitting the granules by group costs several times what replaying them costs (callgrind,
@@ -161,7 +149,7 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
     ReplayScratch::Tile& tile = scratch->tiles[t];
     tile.worker = worker;
     tile.region_ids_begin = static_cast<uint32_t>(w.region_ids.size());
-    split_tile(traces[t].texture_granules.granules(), sets.line_shift, group_bits, w,
+    split_tile(traces[t].texture_granules, sets.line_shift, group_bits, w,
                &scratch->group_ranges[2 * t * groups]);
     tile.region_ids_end = static_cast<uint32_t>(w.region_ids.size());
   });
@@ -171,7 +159,7 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
     const ReplayScratch::Tile& tile = scratch->tiles[t];
     const std::vector<uint64_t>& ids = scratch->workers[tile.worker].region_ids;
     for (uint32_t i = tile.region_ids_begin; i < tile.region_ids_end; ++i) cache.place(ids[i]);
-    accesses += traces[t].texture_granules.granules().size();
+    accesses += traces[t].texture_granules.size();
   }
   // 3. Each group's accesses in tile order, on its own copy of its sets.
   std::vector<uint64_t> group_misses(groups, 0);
@@ -208,21 +196,85 @@ void set_texture_replay_observer(TextureReplayObserver* replay_observer) {
   observer.store(replay_observer);
 }
 
+TextureReplayStream::TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
+                                         TextureReplayDetail& detail)
+    : TextureReplayStream(cache, traces, nullptr, detail) {}
+
+TextureReplayStream::TextureReplayStream(TextureCache& cache, std::vector<TileTrace>& traces,
+                                         TextureReplayDetail& detail, GiveBackBuffers)
+    : TextureReplayStream(cache, traces, &traces, detail) {}
+
+TextureReplayStream::TextureReplayStream(TextureCache& cache, const std::vector<TileTrace>& traces,
+                                         std::vector<TileTrace>* buffers_to_give_back,
+                                         TextureReplayDetail& detail)
+    : cache_(cache),
+      traces_(traces),
+      buffers_to_give_back_(buffers_to_give_back),
+      detail_(detail),
+      observer_(observer.load()),
+      threads_(std::max(1, tbb::this_task_arena::max_concurrency())),
+      group_bits_(group_bits_for(cache.sets(), threads_)),
+      give_back_when_replayed_(buffers_to_give_back != nullptr && group_bits_ == 0 && observer_ == nullptr),
+      recorded_(new std::atomic<bool>[traces.size()]),
+      regions_(place_region, &cache) {
+  for (size_t t = 0; t < traces.size(); ++t) recorded_[t].store(false, std::memory_order_relaxed);
+  detail_.misses_per_tile.assign(traces.size(), 0);
+  detail_.misses_per_region.clear();
+  if (observer_ != nullptr) observer_->before_replay(cache_);
+}
+
+TextureReplayStream::~TextureReplayStream() = default;
+
+void TextureReplayStream::replay_tile(size_t tile) {
+  const std::vector<uint64_t>& granules = traces_[tile].texture_granules;
+  accesses_ += granules.size();
+  const uint64_t tile_misses = replay_granules(cache_.sets(), regions_, granules.data(), granules.size());
+  detail_.misses_per_tile[tile] = tile_misses;
+  misses_ += tile_misses;
+  if (give_back_when_replayed_) give_back_granule_buffer((*buffers_to_give_back_)[tile].texture_granules);
+}
+
+bool TextureReplayStream::next_is_recorded() const {
+  const size_t next = next_tile_.load();
+  return next < traces_.size() && recorded_[next].load();
+}
+
+// The flag, the recorded marks and next_tile_ use sequentially consistent operations, so no
+// recorded tile is left behind: either the holder's last check after letting the flag go sees
+// the mark, or the recording thread's exchange comes after that release and takes the flag.
+void TextureReplayStream::tile_recorded(size_t tile) {
+  recorded_[tile].store(true);
+  if (group_bits_ != 0) return;
+  while (next_is_recorded() && !replaying_.exchange(true)) {
+    size_t next = next_tile_.load();
+    while (next < traces_.size() && recorded_[next].load()) replay_tile(next++);
+    next_tile_.store(next);
+    replaying_.store(false);
+  }
+}
+
+TextureTraffic TextureReplayStream::finish() {
+  TextureTraffic traffic;
+  if (group_bits_ == 0) {
+    for (size_t t = next_tile_.load(); t < traces_.size(); ++t) replay_tile(t);
+    next_tile_.store(traces_.size());
+    regions_.add_misses_to(detail_.misses_per_region);
+    traffic = traffic_of(accesses_, misses_, cache_);
+  } else {
+    traffic = replay_parallel(cache_, traces_, threads_, group_bits_, detail_);
+  }
+  if (observer_ != nullptr) observer_->after_replay(cache_, traces_, traffic);
+  if (buffers_to_give_back_ != nullptr) {
+    for (TileTrace& trace : *buffers_to_give_back_) give_back_granule_buffer(trace.texture_granules);
+  }
+  return traffic;
+}
+
 TextureTraffic replay_texture_traces(TextureCache& cache, const std::vector<TileTrace>& traces,
                                      TextureReplayDetail* detail) {
   TextureReplayDetail local_detail;
-  TextureReplayDetail& out = detail ? *detail : local_detail;
-  out.misses_per_tile.assign(traces.size(), 0);
-  out.misses_per_region.clear();
-  TextureReplayObserver* const watching = observer.load();
-  if (watching != nullptr) watching->before_replay(cache, traces);
-  const int threads = std::max(1, tbb::this_task_arena::max_concurrency());
-  const int group_bits = group_bits_for(cache.sets(), threads);
-  const TextureTraffic traffic = group_bits == 0
-                                     ? replay_serial(cache, traces, out)
-                                     : replay_parallel(cache, traces, threads, group_bits, out);
-  if (watching != nullptr) watching->after_replay(cache, traffic);
-  return traffic;
+  TextureReplayStream stream(cache, traces, detail ? *detail : local_detail);
+  return stream.finish();
 }
 
 }  // namespace ontile

@@ -1,10 +1,9 @@
-// Per-tile records that traffic models replay after all tiles ran, in tile-index order, so the
-// counts never depend on which thread ran which tile: the 64-byte texture granules the tile's
-// fetches touched, and (for the IMR model) every fragment's colour and depth accesses.
+// Per-tile records that traffic models replay in tile-index order, so the counts never depend on
+// which thread ran which tile: the 64-byte texture granules the tile's fetches touched (replayed
+// as tiles complete), and (for the IMR model) every fragment's colour and depth accesses.
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <span>
 #include <vector>
 
 namespace ontile {
@@ -25,20 +24,12 @@ struct FragmentAccess {
   uint8_t subpass = 0;          // index of the triangle's subpass (whose colour outputs it writes)
 };
 
-// A tile's texture granules (byte address / 64, consecutive repeats removed): the range
-// [begin, end) of the buffer its thread recorded them in, which holds the thread's other tiles
-// too (tiler/trace_buffers.h), so a tile allocates nothing. Valid once every tile has run.
-struct GranuleRange {
-  const std::vector<uint64_t>* buffer = nullptr;
-  size_t begin = 0, end = 0;
-  std::span<const uint64_t> granules() const {
-    if (buffer == nullptr) return {};
-    return std::span<const uint64_t>(*buffer).subspan(begin, end - begin);
-  }
-};
-
 struct TileTrace {
-  GranuleRange texture_granules;
+  // The texture granules the tile's fetches touched (byte address / 64, consecutive repeats
+  // removed), in the tile's own buffer: only its tile writes it, so once the tile ran any thread
+  // may read it while other tiles still record (the streamed replay, texture_replay_stream.h).
+  // Buffers come from a pool and go back to it once replayed (memory/granule_buffer_pool.h).
+  std::vector<uint64_t> texture_granules;
   std::vector<FragmentAccess> fragments;  // filled only when fragment recording is on
 };
 

@@ -4,17 +4,18 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <memory>
 
 #include <tbb/combinable.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/task_arena.h>
 
+#include "memory/granule_buffer_pool.h"
 #include "raster/sample_pattern.h"
 #include "raster/texture.h"
 #include "tiler/detail/parameter_buffer.h"
 #include "tiler/detail/parameter_reads.h"
 #include "tiler/detail/tile_executor.h"
-#include "tiler/detail/trace_buffers.h"
 #include "util/error.h"
 #include "util/parallel_for.h"
 
@@ -310,26 +311,39 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
   const int attachment_count = static_cast<int>(pass.attachments.size());
-  const TraceBuffersLease texel_buffers;
   std::vector<TileTrace> traces(grid.tile_count());
   report.tile_stats.resize(grid.tile_count());
   std::atomic<uint32_t> tiles_started{0};
-  ontile::parallel_for(0, grid.tile_count(), [&](int tile) {
+  TextureReplayDetail texture_detail;
+  const std::unique_ptr<TextureReplayStream> texture_replay = external.texel_replay(traces, texture_detail);
+  const auto run_tile = [&](int tile) {
     TileStats& stats = report.tile_stats[tile];
     stats.order = tiles_started.fetch_add(1, std::memory_order_relaxed);
     stats.thread = tbb::this_task_arena::current_thread_index();
     TileMemory& memory = memories.local();
     memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
     TileCounters tile_counters;
-    execute_tile(pass, params, tile, memory, tile_counters, traces[tile],
-                 texel_buffers.local(), external, config.hierarchical_z);
+    TileTrace& trace = traces[tile];
+    trace.texture_granules = take_granule_buffer();
+    execute_tile(pass, params, tile, memory, tile_counters, trace, external, config.hierarchical_z);
+    texture_replay->tile_recorded(static_cast<size_t>(tile));
     counters.local().add(tile_counters);
     record_tile_counters(tile_counters, params, tile, stats);
+  };
+  // Tiles are taken in index order by whichever worker is free (not in ranges, as
+  // tbb::parallel_for splits them), so they complete nearly in order and the texture replay,
+  // which follows tile order, keeps pace with them instead of waiting for the last one.
+  std::atomic<int> next_tile{0};
+  const int workers = std::min(grid.tile_count(), std::max(1, tbb::this_task_arena::max_concurrency()));
+  ontile::parallel_for(0, workers, [&](int) {
+    for (int tile = next_tile.fetch_add(1, std::memory_order_relaxed); tile < grid.tile_count();
+         tile = next_tile.fetch_add(1, std::memory_order_relaxed)) {
+      run_tile(tile);
+    }
   });
   counters.combine_each([&](const TileCounters& c) { report.tiles.add(c); });
   report.tiles_ms = ms_since(tiles_start);
-  TextureReplayDetail texture_detail;
-  report.texture = external.texel_accesses(traces, &texture_detail);
+  report.texture = texture_replay->finish();
   attribute_texture_misses(texture_detail, external.texture_cache_config().line_bytes, report);
   external.fragments(traces);
   if (external.replays_parameter_reads()) replay_parameter_reads(params, pass, external);

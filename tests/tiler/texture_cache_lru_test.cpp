@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <random>
@@ -17,7 +18,9 @@
 
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
-#include "tiler/detail/trace_buffers.h"
+#include "memory/texture_replay_stream.h"
+#include "memory/granule_buffer_pool.h"
+#include "util/parallel_for.h"
 #include "tiler/reference_lru.h"
 
 namespace ontile {
@@ -117,29 +120,37 @@ std::vector<std::vector<uint64_t>> sampled_tiles() {
   return tiles;
 }
 
-// All tiles' granules in one buffer, as a thread records several tiles, and their traces.
-struct PackedTraces {
-  std::vector<uint64_t> buffer;
-  std::vector<TileTrace> traces;
-};
-
-PackedTraces pack(const std::vector<std::vector<uint64_t>>& tiles) {
-  PackedTraces p;
-  for (const auto& tile : tiles) p.buffer.insert(p.buffer.end(), tile.begin(), tile.end());
-  size_t begin = 0;
-  for (const auto& tile : tiles) {
-    TileTrace t;
-    t.texture_granules = {&p.buffer, begin, begin + tile.size()};
-    begin += tile.size();
-    p.traces.push_back(std::move(t));
-  }
-  return p;
+// One trace per tile, each tile's granules in a vector of its own (as tiles record them).
+std::vector<TileTrace> traces_of(const std::vector<std::vector<uint64_t>>& tiles) {
+  std::vector<TileTrace> traces(tiles.size());
+  for (size_t t = 0; t < tiles.size(); ++t) traces[t].texture_granules = tiles[t];
+  return traces;
 }
 
 TextureTraffic replay_with_threads(TextureCache& cache, const std::vector<TileTrace>& traces,
                                    int threads, TextureReplayDetail* detail = nullptr) {
   tbb::task_arena arena(threads);
   return arena.execute([&] { return replay_texture_traces(cache, traces, detail); });
+}
+
+// The replay streamed as a pass runs it: `threads` workers report the tiles recorded in a
+// shuffled order (tiles complete out of order), then finish() replays what is left.
+TextureTraffic replay_streamed(TextureCache& cache, const std::vector<TileTrace>& traces,
+                               int threads, uint64_t seed, TextureReplayDetail& detail) {
+  std::vector<size_t> order(traces.size());
+  for (size_t t = 0; t < order.size(); ++t) order[t] = t;
+  std::mt19937_64 rng(seed);
+  // Mostly in order with local swaps, as tiles taken in index order complete, and a few far moves.
+  for (size_t t = 0; t + 1 < order.size(); ++t) {
+    const size_t reach = rng() % 16 == 0 ? order.size() - t : 4;
+    std::swap(order[t], order[t + rng() % std::min(reach, order.size() - t)]);
+  }
+  tbb::task_arena arena(threads);
+  return arena.execute([&] {
+    TextureReplayStream stream(cache, traces, detail);
+    ontile::parallel_for(size_t{0}, order.size(), [&](size_t i) { stream.tile_recorded(order[i]); });
+    return stream.finish();
+  });
 }
 
 void expect_equal(const TextureTraffic& a, const TextureTraffic& b, const std::string& what) {
@@ -159,7 +170,7 @@ void expect_equal(const TextureReplayDetail& a, const TextureReplayDetail& b,
 // at each thread count, against the reference: totals, misses per tile and per region.
 void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& first,
                                      const std::vector<std::vector<uint64_t>>& second) {
-  const PackedTraces a = pack(first), b = pack(second);
+  const std::vector<TileTrace> a = traces_of(first), b = traces_of(second);
   for (const TextureCacheConfig& c : configs()) {
     ReferenceLru reference(c);
     TextureReplayDetail expected_detail_a, expected_detail_b;
@@ -174,12 +185,20 @@ void expect_replay_matches_reference(const std::vector<std::vector<uint64_t>>& f
       TextureCache cache(c);
       const std::string what = name_of(c) + ", " + std::to_string(threads) + " threads";
       TextureReplayDetail detail_a, detail_b;
-      expect_equal(replay_with_threads(cache, a.traces, threads, &detail_a), expected_a,
+      expect_equal(replay_with_threads(cache, a, threads, &detail_a), expected_a,
                    what + ", pass 1");
       expect_equal(detail_a, expected_detail_a, what + ", pass 1");
-      expect_equal(replay_with_threads(cache, b.traces, threads, &detail_b), expected_b,
+      expect_equal(replay_with_threads(cache, b, threads, &detail_b), expected_b,
                    what + ", pass 2");
       expect_equal(detail_b, expected_detail_b, what + ", pass 2");
+      TextureCache streamed_cache(c);
+      TextureReplayDetail streamed_a, streamed_b;
+      expect_equal(replay_streamed(streamed_cache, a, threads, threads, streamed_a), expected_a,
+                   what + ", streamed pass 1");
+      expect_equal(streamed_a, expected_detail_a, what + ", streamed pass 1");
+      expect_equal(replay_streamed(streamed_cache, b, threads, threads + 100, streamed_b), expected_b,
+                   what + ", streamed pass 2");
+      expect_equal(streamed_b, expected_detail_b, what + ", streamed pass 2");
     }
   }
 }
@@ -220,19 +239,38 @@ TEST(TextureCacheLru, SampledTracesReplayAsThePlainLruAtAnyThreadCount) {
       tiles, std::vector<std::vector<uint64_t>>(tiles.rbegin(), tiles.rend()));
 }
 
-TEST(TraceBuffersLease, LeasesHeldTogetherNeverShareABufferAndStartEmpty) {
-  std::vector<uint64_t>* first_buffer = nullptr;
-  {
-    const TraceBuffersLease a;
-    const TraceBuffersLease b;
-    EXPECT_NE(&a.local(), &b.local());
-    a.local().assign(1000, 7);
-    first_buffer = &a.local();
-  }
-  const TraceBuffersLease again;  // may reuse a's buffers: emptied, capacity kept
-  EXPECT_TRUE(again.local().empty());
-  if (&again.local() == first_buffer) {
-    EXPECT_GE(again.local().capacity(), 1000u);
+TEST(GranuleBufferPool, GivenBackBuffersComeBackEmptyWithTheirCapacity) {
+  std::vector<uint64_t> held = take_granule_buffer();
+  held.assign(10, 5);
+  std::vector<uint64_t> given = take_granule_buffer();
+  given.assign(1000, 7);
+  const uint64_t* memory = given.data();
+  give_back_granule_buffer(given);
+  EXPECT_EQ(given.capacity(), 0u);  // the pool holds its memory now
+  const std::vector<uint64_t> again = take_granule_buffer();  // the last one given back
+  EXPECT_TRUE(again.empty());
+  EXPECT_GE(again.capacity(), 1000u);
+  EXPECT_EQ(again.data(), memory);
+  EXPECT_EQ(held, std::vector<uint64_t>(10, 5));  // a buffer still taken is never handed out
+}
+
+// The replay of a pass gives every tile's buffer back, replayed in streaming or in finish().
+TEST(GranuleBufferPool, AStreamedReplayGivesEveryTileBufferBack) {
+  const std::vector<std::vector<uint64_t>> tiles = random_tiles(3, 40);
+  for (int threads : {1, 2, 7}) {
+    std::vector<TileTrace> traces = traces_of(tiles);
+    TextureCache cache(config(64, 64, 4));
+    TextureReplayDetail detail;
+    tbb::task_arena arena(threads);
+    const TextureTraffic traffic = arena.execute([&] {
+      TextureReplayStream stream(cache, traces, detail, TextureReplayStream::GiveBackBuffers{});
+      ontile::parallel_for(size_t{0}, traces.size(), [&](size_t t) { stream.tile_recorded(t); });
+      return stream.finish();
+    });
+    TextureCache reference_cache(config(64, 64, 4));
+    const std::vector<TileTrace> kept = traces_of(tiles);
+    expect_equal(traffic, replay_texture_traces(reference_cache, kept), std::to_string(threads) + " threads");
+    for (const TileTrace& trace : traces) EXPECT_EQ(trace.texture_granules.capacity(), 0u);
   }
 }
 

@@ -26,12 +26,10 @@ TextureCacheConfig cache_config(uint32_t size_bytes, uint32_t line_bytes, uint32
   return c;
 }
 
-// One TileTrace per granule list, each naming all of its list (which must outlive them).
+// One TileTrace per granule list.
 std::vector<TileTrace> traces_of(const std::vector<std::vector<uint64_t>>& tiles) {
   std::vector<TileTrace> traces(tiles.size());
-  for (size_t t = 0; t < tiles.size(); ++t) {
-    traces[t].texture_granules = {&tiles[t], 0, tiles[t].size()};
-  }
+  for (size_t t = 0; t < tiles.size(); ++t) traces[t].texture_granules = tiles[t];
   return traces;
 }
 

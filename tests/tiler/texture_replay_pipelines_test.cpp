@@ -27,7 +27,7 @@ namespace {
 // from pass to pass as the model's state is) and compares the model's counts with it.
 class ReferenceReplay : public TextureReplayObserver {
  public:
-  void before_replay(const TextureCache& cache, const std::vector<TileTrace>& traces) override {
+  void before_replay(const TextureCache& cache) override {
     // A cache whose ways are all empty holds no state (no placed region either: placing one
     // needs an access): a new frame's, whose reference starts afresh.
     const SetArray& sets = cache.sets();
@@ -38,15 +38,16 @@ class ReferenceReplay : public TextureReplayObserver {
       references_.erase(&cache);
       it = references_.emplace(&cache, ReferenceLru(cache.config())).first;
     }
-    std::vector<std::span<const uint64_t>> tiles;
-    for (const TileTrace& trace : traces) tiles.push_back(trace.texture_granules.granules());
-    expected_ = it->second.replay(tiles, cache.config().line_bytes);
   }
-  void after_replay(const TextureCache&, const TextureTraffic& traffic) override {
-    EXPECT_EQ(traffic.accesses, expected_.accesses) << what;
-    EXPECT_EQ(traffic.hits, expected_.hits) << what;
-    EXPECT_EQ(traffic.misses, expected_.misses) << what;
-    EXPECT_EQ(traffic.bytes_read, expected_.bytes_read) << what;
+  void after_replay(const TextureCache& cache, const std::vector<TileTrace>& traces,
+                    const TextureTraffic& traffic) override {
+    std::vector<std::span<const uint64_t>> tiles;
+    for (const TileTrace& trace : traces) tiles.push_back(trace.texture_granules);
+    const TextureTraffic expected = references_.at(&cache).replay(tiles, cache.config().line_bytes);
+    EXPECT_EQ(traffic.accesses, expected.accesses) << what;
+    EXPECT_EQ(traffic.hits, expected.hits) << what;
+    EXPECT_EQ(traffic.misses, expected.misses) << what;
+    EXPECT_EQ(traffic.bytes_read, expected.bytes_read) << what;
     ++passes_compared;
     accesses_compared += traffic.accesses;
   }
@@ -57,7 +58,6 @@ class ReferenceReplay : public TextureReplayObserver {
 
  private:
   std::map<const TextureCache*, ReferenceLru> references_;
-  TextureTraffic expected_;
 };
 
 struct ObserverInstalled {

@@ -408,11 +408,9 @@ void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory&
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  std::vector<uint64_t>& texel_buffer, MemoryModel& external,
-                  bool hierarchical_z) {
+                  MemoryModel& external, bool hierarchical_z) {
   const bool record_fragment_accesses = external.records_fragments();
-  trace.texture_granules = GranuleRange{&texel_buffer, texel_buffer.size(), texel_buffer.size()};
-  const TexelTraceScope texel_trace(&texel_buffer);
+  const TexelTraceScope texel_trace(&trace.texture_granules);
   const TileGrid& grid = params.grid;
   TileRect rect;
   rect.x0 = (tile_index % grid.tiles_x()) * grid.tile_width_px;
@@ -482,7 +480,6 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   scratch.batcher.flush();
   store_tile(pass, rect, memory);
   external.tile_stored(tile_index, rect);
-  trace.texture_granules.end = texel_buffer.size();
 }
 
 void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }

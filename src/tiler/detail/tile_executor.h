@@ -12,15 +12,13 @@
 
 namespace ontile {
 
-// Texture fetches are traced: appended to texel_buffer (the running thread's, shared with its
-// other tiles), and trace.texture_granules names the part this tile appended. The external
+// Texture fetches are traced: appended to trace.texture_granules (the tile's own). The external
 // memory model hears of the tile's loads and stores, and when it records fragments every
 // fragment's colour/depth accesses go to trace.fragments. hierarchical_z lets early-Z draws skip
 // cells proven occluded (same results, less work).
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
                   TileMemory& memory, TileCounters& counters, TileTrace& trace,
-                  std::vector<uint64_t>& texel_buffer, MemoryModel& external,
-                  bool hierarchical_z = true);
+                  MemoryModel& external, bool hierarchical_z = true);
 
 // Whole covered quad rows (both pixel rows of a cell's quad row covered and passing at one
 // sample per pixel: full-screen triangles, large triangles) are queued as whole quads without
