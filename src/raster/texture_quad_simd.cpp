@@ -567,6 +567,11 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
         float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
+      if (batch.after_quad && batch.trace) {  // the shader's own reads of the quad, staged in order
+        const Texture2D::QuadTraceHook& hook = *batch.after_quad;
+        if (staging.count > TraceStaging::kCapacity - hook.max_granules) staging.flush(*batch.trace);
+        staging.count += hook.append(hook.context, q, staging.granules + 1 + staging.count, staging.last);
+      }
     }
   }
   return finish(batch.quad_count * batch.read_count);

@@ -123,12 +123,9 @@ void main_light_visibility_batch(const ShadowLookup& lookup, const float* x, con
   for (int f = 0; f < count; ++f) out.inside |= static_cast<uint64_t>(inside[f] != 0) << f;
 }
 
-void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes) {
-  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
-  if (!sink) return;
+int shadow_quad_granules(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes,
+                         uint64_t* granules, uint64_t& last) {
   const uint64_t base = lookup.texels.address >> 6;
-  uint64_t granules[kQuadLanes * kShadowTaps];
-  uint64_t last = texel_trace_detail::last_granule;
   int kept = 0;
   const unsigned read = lanes & static_cast<unsigned>(batch.inside >> (q * kQuadLanes)) & 0xFu;
   // Tap 0 is kept unless it repeats the trace's last granule; taps 1..8 where tap_changes says
@@ -143,8 +140,15 @@ void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int
     }
     last = base + batch.granule_offset[kShadowTaps - 1][f];
   }
+  return kept;
+}
+
+void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes) {
+  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
+  if (!sink) return;
+  uint64_t granules[kMaxShadowQuadGranules];
+  const int kept = shadow_quad_granules(lookup, batch, q, lanes, granules, texel_trace_detail::last_granule);
   sink->insert(sink->end(), granules, granules + kept);
-  texel_trace_detail::last_granule = last;
 }
 
 }  // namespace ontile
