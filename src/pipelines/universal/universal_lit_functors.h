@@ -14,6 +14,7 @@
 #include "pipelines/universal/main_light_shadows.h"
 #include "pipelines/universal/main_light_shadows_batch.h"
 #include "pipelines/universal/universal_lit_lighting.h"
+#include "pipelines/universal/universal_normals.h"
 #include "pipelines/universal/universal_lights.h"
 #include "raster/shader_interface.h"
 #include "raster/texel_trace.h"
@@ -97,7 +98,7 @@ class UniversalLitShader final : public UniversalLitFragment {
       const float value = p_.emission[c];  // glm's operator[] is a switch: read it once
       for (int f = 0; f < n; ++f) emissive[c][f] = value;
     }
-    batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
+    universal_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
     [[maybe_unused]] ShadowBatch shadow_batch;
     [[maybe_unused]] bool batched_shadows = false;
     if constexpr (kShadows) {
@@ -275,13 +276,9 @@ class UniversalDepthNormalsShader final : public FragmentShader {
       UniversalAlphaClipShader<kBaseMap>::surface_alpha(p_, batch, alpha);
       UniversalAlphaClipShader<kBaseMap>::discard_below_cutoff(p_, batch, alpha, out);
     }
-    const int count = batch.fragment_count();
-    alignas(64) BatchVec3 world_normal;
-    batch_unit_normals(batch, MeshVertexShader::kNormal, count, world_normal);
-    for (int f = 0; f < count; ++f) {
-      const glm::vec3 view_normal = toon_unit_normal(world_to_view_ * batch_get3(world_normal, f), true);
-      out.set(0, f, encode_view_normal(view_normal, NormalEncoding::Unorm));
-    }
+    // Padding lanes too (the core stores only the batch's fragments).
+    universal_encoded_view_normals(batch, MeshVertexShader::kNormal, world_to_view_,
+                                   batch.padded_fragment_count(), out.color[0]);
   }
 
  private:
