@@ -118,12 +118,11 @@ class UniversalLitShader final : public UniversalLitFragment {
     const float* main_visibility = nullptr;
     if constexpr (kShadows) main_visibility = batched_shadows ? shadow_batch.visibility : visibility;
     universal_lit_lighting(p_, batch, normal, albedo, main_visibility, lit, count, rgb);
-    for (int f = 0; f < count; ++f) {
-      if (!((lit >> f) & 1u)) continue;
-      glm::vec3 c = batch_get3(rgb, f);
-      if constexpr (kEmission) c += batch_get3(emissive, f);
-      out.set(0, f, glm::vec4(c, albedo[3][f]));
+    // Every fragment's output is written, lit or not: the core stores only the kept fragments'.
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < count; ++f) out.color[0][c][f] = kEmission ? rgb[c][f] + emissive[c][f] : rgb[c][f];
     }
+    for (int f = 0; f < count; ++f) out.color[0][3][f] = albedo[3][f];
   }
 
  private:
