@@ -538,8 +538,20 @@ void Texture2D::sample_quad(const SamplerDesc& sampler, const glm::vec2 uv[4],
   sample_quad_lanes<Storage::Bytes8>(levels_, decoder, sampler, uv, fetches, out);
 }
 
+namespace {
+// A QuadTraceHook's granules of quad q appended to the thread's trace (the paths of sample_quads
+// that trace quad by quad).
+void trace_after_quad(const Texture2D::QuadTraceHook* hook, int q) {
+  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
+  if (!hook || !sink) return;
+  uint64_t granules[Texture2D::QuadTraceHook::kMaxGranules];
+  const int count = hook->append(hook->context, q, granules, texel_trace_detail::last_granule);
+  sink->insert(sink->end(), granules, granules + count);
+}
+}  // namespace
+
 void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float* u,
-                             const float* v, int quad_count) {
+                             const float* v, int quad_count, const QuadTraceHook* after_quad) {
   // 8-bit reads with Linear filters (the common sampler) run in one dispatch per batch; a batch
   // with any other read samples quad by quad and read by read through sample_quad.
   if (read_count <= 0 || quad_count <= 0) return;
@@ -576,6 +588,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
           for (int c = 0; c < 4; ++c) reads[r].out[c][f0 + lane] = texel[lane][c];
         }
       }
+      trace_after_quad(after_quad, q);
     }
     return;
   }
@@ -587,6 +600,7 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
   batch.quad_count = quad_count;
   batch.trace = texel_trace_detail::sink;
   batch.last_granule = &texel_trace_detail::last_granule;
+  batch.after_quad = after_quad;
   const int end = quad_count * read_count;
   for (int position = sample_quad_batch8_simd(batch, 0); position < end;
        position = sample_quad_batch8_simd(batch, position + 1)) {
@@ -606,6 +620,8 @@ void Texture2D::sample_quads(const QuadRead* reads, int read_count, const float*
     for (int lane = 0; lane < 4; ++lane) {
       for (int c = 0; c < 4; ++c) reads[r].out[c][f0 + lane] = texel[lane][c];
     }
+    // The kernel goes on at the next job: after a quad's last read, its hook runs here.
+    if (r == read_count - 1) trace_after_quad(after_quad, q);
   }
 }
 

@@ -176,12 +176,24 @@ class Texture2D {
     float* out[4] = {nullptr, nullptr, nullptr, nullptr};
     int fetches = 1;
   };
+  // A shader's own texel trace of a quad, between the quads' texture reads: while sample_quads
+  // traces, it calls append(context, q, out, last) after quad q's reads and before quad q + 1's;
+  // append writes at most max_granules (<= kMaxGranules) granules to out in trace order, repeats
+  // of `last` (the trace's last granule) removed, updates last and returns how many it wrote.
+  // So a functor that reads other memory per quad (shadow-map taps) keeps the per-quad order.
+  struct QuadTraceHook {
+    static constexpr int kMaxGranules = 64;
+    int (*append)(const void* context, int quad, uint64_t* out, uint64_t& last) = nullptr;
+    const void* context = nullptr;
+    int max_granules = 0;
+  };
   // sample_quad for quads q < quad_count, whose lane i is fragment f = 4 q + i at (u[f], v[f]),
   // and per quad for each of `reads` in order: the values and the texel trace of calling
   // sample_quad(*read.sampler, uv, read.fetches) quad by quad and read by read, with the per-call dispatch
-  // done once per batch (8-bit linear samplers run on SIMD lanes a batch per call).
+  // done once per batch (8-bit linear samplers run on SIMD lanes a batch per call); after_quad
+  // (optional) traces after each quad's reads.
   static void sample_quads(const QuadRead* reads, int read_count, const float* u, const float* v,
-                           int quad_count);
+                           int quad_count, const QuadTraceHook* after_quad = nullptr);
 
   struct Level {
     int width = 0, height = 0;

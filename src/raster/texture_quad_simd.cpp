@@ -453,7 +453,10 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
 // Texture2D::sample_quads' jobs (quad q, read r) from position `first` = q * read_count + r on,
 // in that order (texture.cpp's quad_lambda and linear8_job, operation for operation); returns
 // the position of the first job that needs the general path, or quad_count * read_count.
-int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
+// kAfterQuad: batch.after_quad traces after each quad (a separate instance, so batches without
+// a hook pay nothing per quad).
+template <bool kAfterQuad>
+int sample_quad_batch(const QuadBatch8& batch, int first) {
   const hn::CappedTag<float, kLanes> d;
   QuadSample8 jobs[QuadBatch8::kMaxReads];
   // facts[r]: of read r's levels facts_level[r] and the one after it (when there is one).
@@ -568,9 +571,19 @@ int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
         float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
+      if constexpr (kAfterQuad) {  // the shader's own reads of the quad, staged in order
+        const Texture2D::QuadTraceHook& hook = *batch.after_quad;
+        if (staging.count > TraceStaging::kCapacity - hook.max_granules) staging.flush(*batch.trace);
+        staging.count += hook.append(hook.context, q, staging.granules + 1 + staging.count, staging.last);
+      }
     }
   }
   return finish(batch.quad_count * batch.read_count);
+}
+
+int SampleQuadBatch8Kernel(const QuadBatch8& batch, int first) {
+  return batch.after_quad && batch.trace ? sample_quad_batch<true>(batch, first)
+                                         : sample_quad_batch<false>(batch, first);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -54,11 +54,12 @@ struct QuadBatch8 {
   int quad_count = 0;
   std::vector<uint64_t>* trace = nullptr;  // texel trace sink, or null
   uint64_t* last_granule = nullptr;
+  const Texture2D::QuadTraceHook* after_quad = nullptr;  // traced after each quad's reads, or null
 };
 
 // Samples the batch's jobs (quad q, read r), position q * read_count + r, from `first` on in
 // that order, with one dispatch: the level of detail and level selection of sample_quad, then
-// sample_quad8_simd's filter and trace. Returns the position of the first job that needs the
+// sample_quad8_simd's filter and trace (and after_quad's, once a quad's last read ran). Returns the position of the first job that needs the
 // general path (nothing of it read or traced), or quad_count * read_count when all ran.
 int sample_quad_batch8_simd(const QuadBatch8& batch, int first);
 

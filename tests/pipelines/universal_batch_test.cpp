@@ -248,5 +248,58 @@ TEST(UniversalLitLighting, BatchLanesMatchPerFragmentBlinnPhongOnEveryTarget) {
   }
 }
 
+// Lights that add +0 to every lit lane (radiance 0: the main light unlit, a point light out of
+// range) are skipped per vector, except where adding their term changes the bits: a -0 ambient
+// colour (-0 + +0 is +0) and a normal longer than 1 whose power overflows (+0 x inf is NaN).
+TEST(UniversalLitLighting, SkippedLightsLeaveTheBitsOfTheTermOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+  auto batch = std::make_unique<FragmentBatch>();
+  batch->quad_count = kBatchQuads;
+  const int count = kBatchFragments;
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (int round = 0; round < 2; ++round) {
+      UniversalLitParams p;
+      p.smoothness = 1.0f;  // shininess 2^11
+      p.camera_position = {100.0f, 0.0f, 0.0f};
+      p.ambient = {round == 0 ? -0.0f : 0.25f, 0.5f, 0.5f};
+      p.main_light.to_light = {1.0f, 0.0f, 0.0f};
+      p.main_light.radiance = glm::vec3(0.0f);
+      AdditionalLight far;
+      far.position = {0.0f, 100.0f, 0.0f};
+      far.intensity = {3.0f, 2.0f, 1.0f};
+      far.range = 1.0f;
+      p.additional_lights[0] = far;
+      p.additional_light_count = 1;
+      alignas(64) float normal[3][kBatchFragments], albedo[4][kBatchFragments];
+      for (int f = 0; f < count; ++f) {
+        glm::vec3 n = random_unit(rng);
+        if (f == 3) n = {1.3f, 0.0f, 0.0f};  // faces both lights, n_dot_h 1.3: pow overflows
+        for (int c = 0; c < 3; ++c) {
+          normal[c][f] = n[c];
+          batch->varyings[MeshVertexShader::kWorldPos + c][f] = coordinate(rng);
+        }
+        for (int c = 0; c < 4; ++c) albedo[c][f] = 0.5f;
+      }
+      const uint64_t lit = ~uint64_t{0};
+      alignas(64) float rgb[3][kBatchFragments];
+      universal_lit_lighting(p, *batch, normal, albedo, nullptr, lit, count, rgb);
+      for (int f = 0; f < count; ++f) {
+        const glm::vec3 expected =
+            scalar_lighting(p, {normal[0][f], normal[1][f], normal[2][f]},
+                            {batch->varyings[MeshVertexShader::kWorldPos][f], batch->varyings[MeshVertexShader::kWorldPos + 1][f],
+                             batch->varyings[MeshVertexShader::kWorldPos + 2][f]},
+                            {albedo[0][f], albedo[1][f], albedo[2][f]}, 1.0f);
+        if (f == 3) ASSERT_TRUE(std::isnan(expected[0])) << target;  // the case the skip must not take
+        for (int c = 0; c < 3; ++c) {
+          ASSERT_EQ(bits(rgb[c][f]), bits(expected[c])) << target << " round " << round << " fragment " << f << " channel " << c;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ontile

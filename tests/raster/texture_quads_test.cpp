@@ -2,7 +2,8 @@
 // quad by quad and read by read: the same values bit for bit and the same texel trace, for 8-bit
 // linear reads (every mip mode, wrap, LOD bias, block-compressed and tiny levels), reads that
 // take the general path (huge and non-finite coordinates), other samplers and repeated fetches
-// (QuadRead::fetches, traced as often), on every SIMD target.
+// (QuadRead::fetches, traced as often), and a QuadTraceHook's granules between the quads, on
+// every SIMD target.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -44,6 +45,22 @@ SamplerDesc random_sampler(std::mt19937& rng, bool linear) {
   s.wrap_v = wraps[rng() % 3];
   s.lod_bias = rng() % 3 == 0 ? std::uniform_real_distribution<float>(-1.5f, 1.5f)(rng) : 0.0f;
   return s;
+}
+
+// A shader's own per-quad reads: nothing, a repeat of the trace's last granule (dropped) and a
+// new one, or a new one twice (the second dropped) and one that may repeat a texel granule.
+int append_quad_granules(const void*, int q, uint64_t* out, uint64_t& last) {
+  const uint64_t pattern[3][3] = {{}, {last, 5000u + static_cast<uint64_t>(q)},
+                                  {6000u + static_cast<uint64_t>(q), 6000u + static_cast<uint64_t>(q), 7}};
+  const int lengths[3] = {0, 2, 3};
+  int count = 0;
+  for (int i = 0; i < lengths[q % 3]; ++i) {
+    const uint64_t granule = pattern[q % 3][i];
+    if (granule == last) continue;
+    out[count++] = granule;
+    last = granule;
+  }
+  return count;
 }
 
 TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
@@ -89,6 +106,8 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
       }
     }
     std::vector<uint64_t> expected_trace{7}, trace{7};  // a granule before: merges count too
+    const Texture2D::QuadTraceHook hook{&append_quad_granules, nullptr, 3};
+    const Texture2D::QuadTraceHook* after_quad = round % 3 == 1 ? &hook : nullptr;
     float expected[5][4][kFragments], out[5][4][kFragments];
     {
       const TexelTraceScope scope(&expected_trace);
@@ -102,6 +121,11 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
             for (int c = 0; c < 4; ++c) expected[r][c][q * 4 + lane] = texel[lane][c];
           }
         }
+        if (after_quad) {
+          uint64_t granules[3];
+          const int count = append_quad_granules(nullptr, q, granules, texel_trace_detail::last_granule);
+          expected_trace.insert(expected_trace.end(), granules, granules + count);
+        }
       }
     }
     {
@@ -110,7 +134,7 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
         reads[r] = {read_textures[r], &samplers[r], {out[r][0], out[r][1], out[r][2], out[r][3]}, fetches[r]};
       }
       const TexelTraceScope scope(&trace);
-      Texture2D::sample_quads(reads, read_count, u, v, quads);
+      Texture2D::sample_quads(reads, read_count, u, v, quads, after_quad);
     }
     ASSERT_EQ(trace, expected_trace) << "round " << round;
     for (int r = 0; r < read_count; ++r) {

@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include <bit>
+#include <cstring>
 #include <vector>
 
 #include "pipelines/universal/main_light_shadows_batch.h"
@@ -20,9 +21,19 @@ namespace hn = hwy::HWY_NAMESPACE;
 using DF = hn::ScalableTag<float>;
 using DI = hn::RebindToSigned<DF>;
 
+// The bits of a mask's lanes (lane i: bit i).
+HWY_INLINE uint64_t mask_bits(DF df, hn::Mask<DF> m) {
+  uint8_t bytes[8] = {};
+  hn::StoreMaskBits(df, m, bytes);
+  uint64_t bits = 0;
+  std::memcpy(&bits, bytes, sizeof(bits));
+  const size_t n = hn::Lanes(df);
+  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
+}
+
 void ShadowBatchKernel(const ShadowLookup& s, const float* x, const float* y, const float* z,
                        const float (&normal)[3][kBatchFragments], glm::vec3 to_light, int count,
-                       ShadowBatch& out, int32_t* inside_out) {
+                       ShadowBatch& out) {
   const DF df;
   const DI di;
   const Texture2D::TexelView& map = s.texels;
@@ -45,6 +56,7 @@ void ShadowBatchKernel(const ShadowLookup& s, const float* x, const float* y, co
   const auto width_i = hn::Set(di, w);
   const auto bytes_per_texel = hn::Set(di, static_cast<int32_t>(map.memory_bytes_per_texel));
   const auto stride = hn::Set(di, float_stride);
+  out.inside = 0;
   for (size_t f = 0; f < static_cast<size_t>(count); f += hn::Lanes(df)) {
     const auto nx = hn::LoadU(df, normal[0] + f), ny = hn::LoadU(df, normal[1] + f),
                nz = hn::LoadU(df, normal[2] + f);
@@ -90,7 +102,7 @@ void ShadowBatchKernel(const ShadowLookup& s, const float* x, const float* y, co
     hn::StoreU(changes, di, out.tap_changes + f);
     const auto visibility = hn::Sub(one, hn::Mul(strength, hn::Sub(one, hn::Div(lit, nine))));
     hn::StoreU(hn::IfThenElse(inside, visibility, one), df, out.visibility + f);
-    hn::StoreU(hn::VecFromMask(di, hn::RebindMask(di, inside)), di, inside_out + f);
+    out.inside |= mask_bits(df, inside) << f;
   }
 }
 
@@ -117,18 +129,16 @@ bool shadow_batch_supported(const ShadowLookup& s) {
 void main_light_visibility_batch(const ShadowLookup& lookup, const float* x, const float* y,
                                  const float* z, const float (&normal)[3][kBatchFragments],
                                  glm::vec3 to_light, int count, ShadowBatch& out) {
-  alignas(64) int32_t inside[kBatchFragments];
-  HWY_DYNAMIC_DISPATCH(ShadowBatchKernel)(lookup, x, y, z, normal, to_light, count, out, inside);
-  out.inside = 0;
-  for (int f = 0; f < count; ++f) out.inside |= static_cast<uint64_t>(inside[f] != 0) << f;
+  HWY_DYNAMIC_DISPATCH(ShadowBatchKernel)(lookup, x, y, z, normal, to_light, count, out);
 }
 
-void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes) {
-  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
-  if (!sink) return;
+// tap_changes of a footprint whose rows each lie in one granule, the rows in different ones
+// (taps 3 and 6 start new granules): most lookups away from granule edges.
+constexpr int32_t kRowChanges = (1 << 2) | (1 << 5);
+
+int shadow_quad_granules(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes,
+                         uint64_t* granules, uint64_t& last) {
   const uint64_t base = lookup.texels.address >> 6;
-  uint64_t granules[kQuadLanes * kShadowTaps];
-  uint64_t last = texel_trace_detail::last_granule;
   int kept = 0;
   const unsigned read = lanes & static_cast<unsigned>(batch.inside >> (q * kQuadLanes)) & 0xFu;
   // Tap 0 is kept unless it repeats the trace's last granule; taps 1..8 where tap_changes says
@@ -138,13 +148,27 @@ void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int
     const uint64_t first = base + batch.granule_offset[0][f];
     granules[kept] = first;
     kept += first != last;
+    if (batch.tap_changes[f] == kRowChanges) {  // the common footprint, without the bit loop
+      granules[kept] = base + batch.granule_offset[3][f];
+      granules[kept + 1] = base + batch.granule_offset[6][f];
+      kept += 2;
+      last = base + batch.granule_offset[kShadowTaps - 1][f];
+      continue;
+    }
     for (uint32_t changes = static_cast<uint32_t>(batch.tap_changes[f]); changes != 0; changes &= changes - 1) {
       granules[kept++] = base + batch.granule_offset[std::countr_zero(changes) + 1][f];
     }
     last = base + batch.granule_offset[kShadowTaps - 1][f];
   }
+  return kept;
+}
+
+void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes) {
+  std::vector<uint64_t>* const sink = texel_trace_detail::sink;
+  if (!sink) return;
+  uint64_t granules[kMaxShadowQuadGranules];
+  const int kept = shadow_quad_granules(lookup, batch, q, lanes, granules, texel_trace_detail::last_granule);
   sink->insert(sink->end(), granules, granules + kept);
-  texel_trace_detail::last_granule = last;
 }
 
 }  // namespace ontile

@@ -35,6 +35,14 @@ void main_light_visibility_batch(const ShadowLookup& lookup, const float* x, con
                                  const float* z, const float (&normal)[3][kBatchFragments],
                                  glm::vec3 to_light, int count, ShadowBatch& out);
 
+constexpr int kMaxShadowQuadGranules = kQuadLanes * kShadowTaps;
+
+// What trace_shadow_quad appends, written to granules[0 ..) instead (at most
+// kMaxShadowQuadGranules), repeats of `last` (the trace's last granule, updated) removed;
+// returns the count.
+int shadow_quad_granules(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes,
+                         uint64_t* granules, uint64_t& last);
+
 // Appends to the thread's texel trace what main_light_visibility records for the fragments of
 // quad q whose lane bit is set in `lanes`, in lane order.
 void trace_shadow_quad(const ShadowLookup& lookup, const ShadowBatch& batch, int q, unsigned lanes);

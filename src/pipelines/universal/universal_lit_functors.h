@@ -6,6 +6,7 @@
 #pragma once
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 #include <glm/glm.hpp>
@@ -13,8 +14,10 @@
 #include "pipelines/universal/main_light_shadows.h"
 #include "pipelines/universal/main_light_shadows_batch.h"
 #include "pipelines/universal/universal_lit_lighting.h"
+#include "pipelines/universal/universal_normals.h"
 #include "pipelines/universal/universal_lights.h"
 #include "raster/shader_interface.h"
+#include "raster/texel_trace.h"
 #include "shaders_cpp/batch_helpers.h"
 #include "shaders_cpp/mesh_vertex_shader.h"
 #include "shaders_cpp/toon/toon_outputs.h"
@@ -95,7 +98,7 @@ class UniversalLitShader final : public UniversalLitFragment {
       const float value = p_.emission[c];  // glm's operator[] is a switch: read it once
       for (int f = 0; f < n; ++f) emissive[c][f] = value;
     }
-    batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
+    universal_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
     [[maybe_unused]] ShadowBatch shadow_batch;
     [[maybe_unused]] bool batched_shadows = false;
     if constexpr (kShadows) {
@@ -108,6 +111,86 @@ class UniversalLitShader final : public UniversalLitFragment {
                                     p_.main_light.to_light, n, shadow_batch);
       }
     }
+    const uint64_t lit = !kShadows || batched_shadows
+                             ? surface_batch(batch, shadow_batch, albedo, emissive, out)
+                             : surface_per_quad(batch, normal, albedo, emissive, visibility, out);
+    alignas(64) BatchVec3 rgb;
+    const float* main_visibility = nullptr;
+    if constexpr (kShadows) main_visibility = batched_shadows ? shadow_batch.visibility : visibility;
+    universal_lit_lighting(p_, batch, normal, albedo, main_visibility, lit, count, rgb);
+    // Every fragment's output is written, lit or not: the core stores only the kept fragments'.
+    for (int c = 0; c < 3; ++c) {
+      for (int f = 0; f < count; ++f) out.color[0][c][f] = kEmission ? rgb[c][f] + emissive[c][f] : rgb[c][f];
+    }
+    for (int f = 0; f < count; ++f) out.color[0][3][f] = albedo[3][f];
+  }
+
+ private:
+  // What the shadow trace of a quad needs: its kept fragments are the active ones whose albedo
+  // alpha (base_alpha x the base map's, as albedo has it) passes the alpha test.
+  struct ShadowTraceOfQuads {
+    const UniversalLitParams* params;
+    const FragmentBatch* batch;
+    const ShadowBatch* shadows;
+    const float* base_map_alpha;  // texel alpha per fragment (_BASEMAP), else null
+  };
+  static int append_shadow_trace(const void* context, int q, uint64_t* out, uint64_t& last) {
+    const ShadowTraceOfQuads& trace = *static_cast<const ShadowTraceOfQuads*>(context);
+    const UniversalLitParams& p = *trace.params;
+    unsigned lanes = trace.batch->lane_mask[q] & 0xFu;
+    if constexpr (kAlphaTest) {
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        const float base_alpha = p.surface.base_color.w;
+        const float alpha = kBaseMap ? base_alpha * trace.base_map_alpha[q * kQuadLanes + lane] : base_alpha;
+        if (alpha < p.surface.alpha_cutoff) lanes &= ~(1u << lane);
+      }
+    }
+    return shadow_quad_granules(p.shadow, *trace.shadows, q, lanes, out, last);
+  }
+
+  // The surface reads of the batch in one Texture2D::sample_quads call, the shadow taps (when
+  // batched) traced after each quad's reads by its hook: the per-quad trace order of
+  // surface_per_quad. Discards alpha-tested fragments; returns the kept (lit) ones.
+  uint64_t surface_batch(const FragmentBatch& batch, const ShadowBatch& shadow_batch, BatchVec4& albedo,
+                         BatchVec3& emissive, BatchOutput& out) const {
+    alignas(64) BatchVec4 base_texel, emission_texel;
+    Texture2D::QuadRead reads[2];
+    int read_count = 0;
+    if constexpr (kBaseMap) reads[read_count++] = batch_texture_read(p_.surface.base_map, p_.surface.base_sampler, base_texel);
+    const bool emission_read = kEmission && p_.emission_map;  // glTF 2.0 3.9.3: factor x texture
+    if (emission_read) reads[read_count++] = batch_texture_read(p_.emission_map, p_.emission_sampler, emission_texel);
+    const ShadowTraceOfQuads shadow_trace{&p_, &batch, &shadow_batch, kBaseMap ? base_texel[3] : nullptr};
+    const Texture2D::QuadTraceHook hook{&append_shadow_trace, &shadow_trace, kMaxShadowQuadGranules};
+    if (read_count > 0) {
+      Texture2D::sample_quads(reads, read_count, batch.varyings[MeshVertexShader::kUv],
+                              batch.varyings[MeshVertexShader::kUv + 1], batch.quad_count,
+                              kShadows ? &hook : nullptr);
+    } else if (kShadows && texel_trace_detail::sink) {
+      for (int q = 0; q < batch.quad_count; ++q) {
+        uint64_t granules[kMaxShadowQuadGranules];
+        const int kept = append_shadow_trace(&shadow_trace, q, granules, texel_trace_detail::last_granule);
+        texel_trace_detail::sink->insert(texel_trace_detail::sink->end(), granules, granules + kept);
+      }
+    }
+    if constexpr (kBaseMap) batch_multiply_quads(albedo, 4, batch.quad_count, base_texel);
+    if (emission_read) batch_multiply_quads(emissive, 3, batch.quad_count, emission_texel);
+    uint64_t lit = batch.active_mask();
+    if constexpr (kAlphaTest) {
+      for (uint64_t rest = lit; rest != 0; rest &= rest - 1) {
+        const int f = std::countr_zero(rest);
+        if (albedo[3][f] < p_.surface.alpha_cutoff) {
+          out.discard(f);
+          lit &= ~(uint64_t{1} << f);
+        }
+      }
+    }
+    return lit;
+  }
+
+  // The surface reads quad by quad, each quad's shadow lookups (fragment by fragment, for maps
+  // the batched lookups cannot read) after them.
+  uint64_t surface_per_quad(const FragmentBatch& batch, const BatchVec3& normal, BatchVec4& albedo,
+                            BatchVec3& emissive, float* visibility, BatchOutput& out) const {
     uint64_t lit = 0;
     for (int q = 0; q < batch.quad_count; ++q) {
       glm::vec2 uv[kQuadLanes];
@@ -133,29 +216,11 @@ class UniversalLitShader final : public UniversalLitFragment {
           }
         }
         lit |= uint64_t{1} << f;
-        if constexpr (kShadows) {
-          if (!batched_shadows) {
-            visibility[f] = main_light_visibility(p_.shadow, batch_var3(batch, MeshVertexShader::kWorldPos, f),
-                                                  batch_get3(normal, f), p_.main_light.to_light);
-          }
-        }
-      }
-      if constexpr (kShadows) {
-        if (batched_shadows) {
-          trace_shadow_quad(p_.shadow, shadow_batch, q, static_cast<unsigned>(lit >> (q * kQuadLanes)) & 0xFu);
-        }
+        visibility[f] = main_light_visibility(p_.shadow, batch_var3(batch, MeshVertexShader::kWorldPos, f),
+                                              batch_get3(normal, f), p_.main_light.to_light);
       }
     }
-    alignas(64) BatchVec3 rgb;
-    const float* main_visibility = nullptr;
-    if constexpr (kShadows) main_visibility = batched_shadows ? shadow_batch.visibility : visibility;
-    universal_lit_lighting(p_, batch, normal, albedo, main_visibility, lit, count, rgb);
-    for (int f = 0; f < count; ++f) {
-      if (!((lit >> f) & 1u)) continue;
-      glm::vec3 c = batch_get3(rgb, f);
-      if constexpr (kEmission) c += batch_get3(emissive, f);
-      out.set(0, f, glm::vec4(c, albedo[3][f]));
-    }
+    return lit;
   }
 };
 
@@ -210,13 +275,9 @@ class UniversalDepthNormalsShader final : public FragmentShader {
       UniversalAlphaClipShader<kBaseMap>::surface_alpha(p_, batch, alpha);
       UniversalAlphaClipShader<kBaseMap>::discard_below_cutoff(p_, batch, alpha, out);
     }
-    const int count = batch.fragment_count();
-    alignas(64) BatchVec3 world_normal;
-    batch_unit_normals(batch, MeshVertexShader::kNormal, count, world_normal);
-    for (int f = 0; f < count; ++f) {
-      const glm::vec3 view_normal = toon_unit_normal(world_to_view_ * batch_get3(world_normal, f), true);
-      out.set(0, f, encode_view_normal(view_normal, NormalEncoding::Unorm));
-    }
+    // Padding lanes too (the core stores only the batch's fragments).
+    universal_encoded_view_normals(batch, MeshVertexShader::kNormal, world_to_view_,
+                                   batch.padded_fragment_count(), out.color[0]);
   }
 
  private:
