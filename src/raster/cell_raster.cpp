@@ -6,6 +6,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <algorithm>
 #include <bit>
 #include <cstring>
@@ -25,17 +27,6 @@ alignas(64) constexpr int32_t kCellLx[kCellPixels] = {
 alignas(64) constexpr int32_t kCellLy[kCellPixels] = {
     0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3,
     4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6, 6, 6, 7, 7, 7, 7, 7, 7, 7, 7};
-
-// Lane mask bits of a vector as an integer (lane i -> bit i).
-template <class D, class M>
-uint64_t mask_bits(D d, M m) {
-  uint8_t bytes[8] = {};
-  hn::StoreMaskBits(d, m, bytes);
-  uint64_t bits = 0;
-  std::memcpy(&bits, bytes, sizeof(bits));
-  const size_t n = hn::Lanes(d);
-  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
-}
 
 // Bit i set where e0[k] + a[k] * lx_i + b[k] * ly_i >= 0 for every edge k < kEdges, for bits in
 // [first_bit, end_bit) (others may be set or not). The caller guarantees every partial sum

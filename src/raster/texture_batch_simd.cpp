@@ -5,6 +5,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <bit>
 #include <cstring>
 
@@ -206,11 +208,7 @@ int NearestGranulesKernel(const int32_t* x, const int32_t* y, int count, int wid
   uint64_t changed = 0;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
     const auto differs = hn::Ne(hn::LoadU(di, granule + 1 + f), hn::LoadU(di, granule + f));
-    uint8_t bytes[8] = {};
-    hn::StoreMaskBits(di, differs, bytes);
-    uint64_t bits = 0;
-    std::memcpy(&bits, bytes, sizeof(bits));
-    changed |= (n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1)) << f;
+    changed |= mask_bits(di, differs) << f;
   }
   if (count < 64) changed &= (uint64_t{1} << count) - 1;
   int kept = 0;

@@ -6,6 +6,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <bit>
 #include <cstring>
 #include <vector>
@@ -20,16 +22,6 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 using DF = hn::ScalableTag<float>;
 using DI = hn::RebindToSigned<DF>;
-
-// The bits of a mask's lanes (lane i: bit i).
-HWY_INLINE uint64_t mask_bits(DF df, hn::Mask<DF> m) {
-  uint8_t bytes[8] = {};
-  hn::StoreMaskBits(df, m, bytes);
-  uint64_t bits = 0;
-  std::memcpy(&bits, bytes, sizeof(bits));
-  const size_t n = hn::Lanes(df);
-  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
-}
 
 void ShadowBatchKernel(const ShadowLookup& s, const float* x, const float* y, const float* z,
                        const float (&normal)[3][kBatchFragments], glm::vec3 to_light, int count,

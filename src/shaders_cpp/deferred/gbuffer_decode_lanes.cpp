@@ -8,6 +8,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <cstring>
 
 #include "shaders_cpp/deferred/gbuffer_decode_lanes.h"
@@ -113,11 +115,7 @@ uint64_t InFrontOfFarPlaneKernel(const float* depth, int count) {
   uint64_t near = 0;
   size_t f = 0;
   for (; f + n <= static_cast<size_t>(count); f += n) {
-    uint8_t bytes[8] = {};
-    hn::StoreMaskBits(df, hn::Lt(hn::LoadU(df, depth + f), one), bytes);
-    uint64_t bits = 0;
-    std::memcpy(&bits, bytes, sizeof(bits));
-    near |= (n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1)) << f;
+    near |= mask_bits(df, hn::Lt(hn::LoadU(df, depth + f), one)) << f;
   }
   for (; f < static_cast<size_t>(count); ++f) near |= uint64_t{depth[f] < 1.0f} << f;
   return near;

@@ -7,6 +7,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <climits>
 #include <cmath>
 #include <cstring>
@@ -18,6 +20,7 @@ HWY_BEFORE_NAMESPACE();
 namespace ontile::sobel {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+using ontile::HWY_NAMESPACE::mask_bits;
 
 using DF = hn::ScalableTag<float>;
 using DI = hn::RebindToSigned<DF>;
@@ -32,16 +35,6 @@ constexpr float kMinOneMinusDepth = 5.9604645e-8f;  // 2^-24, as linearize_depth
 HWY_INLINE hn::Mask<DI> lanes_of(DI di, uint64_t bits) {
   const VI word = hn::Set(di, static_cast<int32_t>(bits & 0xFFFFu));
   return hn::Ne(hn::And(word, hn::Load(di, kLaneBit)), hn::Zero(di));
-}
-
-// Mask bits of a vector as an integer (lane i -> bit i).
-HWY_INLINE uint64_t mask_bits(DF df, hn::Mask<DF> m) {
-  uint8_t bytes[8] = {};
-  hn::StoreMaskBits(df, m, bytes);
-  uint64_t bits = 0;
-  std::memcpy(&bits, bytes, sizeof(bits));
-  const size_t n = hn::Lanes(df);
-  return n >= 64 ? bits : bits & ((uint64_t{1} << n) - 1);
 }
 
 // nearest_clamped_texel on lanes. When every lane's u * size is below 2^24 in magnitude (every

@@ -7,6 +7,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "raster/lane_bits-inl.h"
+
 #include <bit>
 #include <cstring>
 
@@ -16,6 +18,7 @@ HWY_BEFORE_NAMESPACE();
 namespace ontile::sobel {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+using ontile::HWY_NAMESPACE::mask_bits;
 
 using DU = hn::ScalableTag<uint32_t>;
 using VU = hn::Vec<DU>;
@@ -182,11 +185,7 @@ int TraceBatch32Kernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
                                   hn::Set(du, static_cast<uint32_t>(p)), pattern_of);
     }
     hn::Store(pattern_of, du, pattern + f);
-    uint8_t bytes[8] = {};
-    hn::StoreMaskBits(du, hn::Eq(pattern_of, hn::Zero(du)), bytes);
-    uint64_t bits = 0;
-    std::memcpy(&bits, bytes, sizeof(bits));
-    pattern0 |= (lanes >= 64 ? bits : bits & ((uint64_t{1} << lanes) - 1)) << f;
+    pattern0 |= mask_bits(du, hn::Eq(pattern_of, hn::Zero(du))) << f;
   }
   // The border read of fragments on an edge, at the nearest tap's texel.
   const uint64_t* const untag = planes.slot_untag;
