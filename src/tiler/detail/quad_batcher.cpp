@@ -43,15 +43,6 @@ TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc&
                                  const float* varyings_, int varying_count_,
                                  const SamplePattern& pattern_, const TileRect& rect_,
                                  const FramebufferFetch* fetch_, uint32_t triangle_ref_,
-                                 std::vector<FragmentAccess>* fragments_)
-    : TriangleContext(pass_, subpass_, draw_, tri_, varyings_, varying_count_, pattern_, rect_,
-                      fetch_, triangle_ref_, fragments_, DrawState(pass_, subpass_, draw_)) {}
-
-TriangleContext::TriangleContext(const RenderPassDesc& pass_, const SubpassDesc& subpass_,
-                                 const DrawCall& draw_, const BinnedTriangle& tri_,
-                                 const float* varyings_, int varying_count_,
-                                 const SamplePattern& pattern_, const TileRect& rect_,
-                                 const FramebufferFetch* fetch_, uint32_t triangle_ref_,
                                  std::vector<FragmentAccess>* fragments_, const DrawState& state)
     : pass(pass_), subpass(subpass_), draw(draw_), tri(tri_), varyings(varyings_),
       varying_count(varying_count_), pattern(pattern_), rect(rect_), fetch(fetch_),

@@ -72,12 +72,7 @@ struct TriangleContext {
   bool hiz_tracked;  // the pass has depth: cells keep their depth bounds
   bool hiz_enabled;  // this draw may skip cells by hierarchical Z (early Z, ordering compare)
 
-  TriangleContext(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw,
-                  const BinnedTriangle& tri, const float* varyings, int varying_count,
-                  const SamplePattern& pattern, const TileRect& rect,
-                  const FramebufferFetch* fetch, uint32_t triangle_ref,
-                  std::vector<FragmentAccess>* fragments);
-  // The same with the draw's state computed before.
+  // `state`: the draw's DrawState, computed once per run of its triangles.
   TriangleContext(const RenderPassDesc& pass, const SubpassDesc& subpass, const DrawCall& draw,
                   const BinnedTriangle& tri, const float* varyings, int varying_count,
                   const SamplePattern& pattern, const TileRect& rect,
