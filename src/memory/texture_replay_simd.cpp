@@ -10,6 +10,7 @@
 #include <hwy/highway.h>
 
 #include "memory/texture_replay_kernel.h"
+#include "raster/lane_bits-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -83,6 +84,51 @@ HWY_INLINE bool AccessPastTopTwo(uint64_t* recent, uint64_t* row, size_t older_w
   return hit;
 }
 
+// AccessPastTopTwo for the default 16-way cache without a branch on where the line is: every
+// older way compared at once, then ways 0..p-1 move to 1..p in one select per vector (p: the
+// hit's way, or the last way on a miss, whose line drops out). Where a hit lands is as random as
+// the texture footprint, so the branches of the search-then-shift form mispredict often
+// (bench/texture_replay_bench.cpp: about 30 ns per access that misses the two most recent ways).
+// Whole vectors over the 15 older ways, the last one overlapping the one before: every new value
+// is computed from the loaded row before anything is stored, so the overlap stores equal values.
+HWY_INLINE bool AccessAllWays(uint64_t* recent, uint64_t* row, uint64_t line) {
+  constexpr size_t kOlderWays = 15;
+  const D d;
+  const hn::RebindToSigned<D> di;
+  constexpr size_t kMaxVectors = kOlderWays;  // 1-lane targets need one per way
+  const size_t lanes = hn::Lanes(d);
+  const size_t vectors = (kOlderWays + lanes - 1) / lanes;
+  const auto wanted = hn::Set(d, line);
+  hn::Vec<D> old[kMaxVectors];
+  size_t start[kMaxVectors];
+  uint64_t hits = 0;
+  for (size_t k = 0; k < vectors; ++k) {
+    start[k] = k + 1 < vectors ? k * lanes : kOlderWays - lanes;
+    old[k] = hn::LoadU(d, row + start[k]);
+    hits |= mask_bits(d, hn::Eq(old[k], wanted)) << start[k];
+  }
+  const bool hit = hits != 0;
+  // Row positions 0..last take the way before theirs (position 0 takes way 0, *recent).
+  const uint64_t last = hit ? static_cast<uint64_t>(__builtin_ctzll(hits)) : kOlderWays - 1;
+  const auto moved_end = hn::Set(di, static_cast<int64_t>(last) + 1);
+  for (size_t k = 0; k < vectors; ++k) {
+    hn::Vec<D> before;
+    if (start[k] == 0) {
+      // Lanes 0, 0, 1, 2, ...: the row moved up one lane, then lane 0 takes way 0.
+      alignas(64) static constexpr int64_t kLaneBefore[16] = {0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14};
+      const auto up = hn::TableLookupLanes(old[0], hn::SetTableIndices(d, kLaneBefore));
+      before = hn::IfThenElse(hn::FirstN(d, 1), hn::Set(d, *recent), up);
+    } else {
+      before = hn::LoadU(d, row + start[k] - 1);
+    }
+    const auto moved = hn::RebindMask(d, hn::Lt(hn::Iota(di, static_cast<int64_t>(start[k])), moved_end));
+    old[k] = hn::IfThenElse(moved, before, old[k]);
+  }
+  for (size_t k = 0; k < vectors; ++k) hn::StoreU(old[k], d, row + start[k]);
+  *recent = line;
+  return hit;
+}
+
 // One granule the long way, in stream order: its region's offset (resolved if new), then the full
 // LRU access; a miss is counted against its region.
 // kPlain: power-of-two sets, line_shift and index_shift 0; kOlderWays: ways - 1 when known at
@@ -114,8 +160,13 @@ HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t g
       return true;
     }
   }
-  const bool hit = AccessPastTopTwo<kOlderWays>(recent, row, older_ways, line);
-  if (!hit) regions.count_miss(id);
+  bool hit;
+  if constexpr (kOlderWays == 15) {
+    hit = AccessAllWays(recent, row, line);
+  } else {
+    hit = AccessPastTopTwo<kOlderWays>(recent, row, older_ways, line);
+  }
+  regions.misses[slot] += hit ? 0 : 1;  // count_miss without a branch
   return hit;
 }
 
@@ -144,7 +195,8 @@ class RecentHits {
         line_shift_(sets.line_shift),
         index_shift_(sets.line_shift + sets.index_shift) {}
 
-  HWY_INLINE size_t Leading(const uint64_t* granules, size_t count) const {
+  // `breaks` counts the vectors that were not all most-recent-way hits.
+  HWY_INLINE size_t Leading(const uint64_t* granules, size_t count, size_t& breaks) const {
     const size_t lanes = hn::Lanes(d_);
     size_t i = 0;
     // Two vectors per branch: runs of most-recent-way hits average about 20 granules.
@@ -158,12 +210,14 @@ class RecentHits {
         continue;
       }
       if (hn::AllTrue(d_, first)) {  // the first vector changed nothing: the second's test holds
+        ++breaks;
         const size_t replayed = TopTwo(second, second_line, second_index);
         i += lanes + replayed;
         if (replayed < lanes) return i;
         continue;
       }
       // The second vector is tested again against the state the first leaves.
+      ++breaks;
       const size_t replayed = TopTwo(first, line, index);
       i += replayed;
       if (replayed < lanes) return i;
@@ -172,6 +226,7 @@ class RecentHits {
       hn::Vec<D> line, index;
       const auto hit = Hit(granules + i, line, index);
       if (hn::AllTrue(d_, hit)) continue;
+      ++breaks;
       const size_t replayed = TopTwo(hit, line, index);
       if (replayed < lanes) return i + replayed;
     }
@@ -242,19 +297,80 @@ class RecentHits {
   int line_shift_, index_shift_;
 };
 
+// Granules [i, end) one at a time for the default 16-way cache with power-of-two sets: a hit in
+// either of the set's two most recent ways is taken without a branch on which (a way-1 hit
+// swaps the two), so the only data-dependent branch is the one into AccessAllWays. For streams
+// where the vector test of RecentHits breaks every few granules (a trilinear footprint
+// alternating two rows of one set), which costs a mispredicted branch or two per break.
+// Returns the misses; `breaks` counts the accesses that missed the most recent way.
+template <bool kPlain>
+HWY_INLINE uint64_t ReplayTopTwoScalar(const SetArray& sets, RegionTable& regions,
+                                       const uint64_t* granules, size_t count, size_t& breaks) {
+  constexpr size_t kOlderWays = 15;
+  uint64_t misses = 0;
+  for (size_t i = 0; i < count; ++i) {
+    const uint64_t granule = granules[i];
+    const uint64_t id = granule >> kRegionShift;
+    const size_t slot = id & (RegionTable::kSlots - 1);
+    uint64_t line = granule + regions.offset(id);
+    uint32_t set;
+    if constexpr (kPlain) {
+      set = static_cast<uint32_t>(line & (sets.sets - 1));
+    } else {
+      line >>= sets.line_shift;
+      set = sets.index_of_line(line);
+    }
+    uint64_t* const recent = sets.tags + set;
+    uint64_t* const row = sets.tags + sets.sets + static_cast<size_t>(set) * kOlderWays;
+    const uint64_t way0 = *recent, way1 = row[0];
+    const bool in_way1 = way1 == line;
+    breaks += way0 == line ? 0 : 1;
+    if (HWY_LIKELY((way0 == line) | in_way1)) {
+      row[0] = in_way1 ? way0 : way1;
+      *recent = line;
+      continue;
+    }
+    const bool hit = AccessAllWays(recent, row, line);
+    regions.misses[slot] += hit ? 0 : 1;
+    misses += hit ? 0 : 1;
+  }
+  return misses;
+}
+
+// Blocks of granules, each replayed by whichever loop suits the stream as the block before saw
+// it: RecentHits' vectors where runs of most-recent-way hits are long (a vector costs about what
+// one scalar access does), ReplayTopTwoScalar where the runs break more than once in
+// kScalarBreakRatio granules. Both give the counts of the per-access loop, so the choice changes
+// only the time (bench/texture_replay_bench.cpp: DamagedHelmet's lambert trace breaks every 3-4
+// granules, the demo's every 20-30).
 template <bool kPlain, size_t kOlderWays>
 uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
                               const uint64_t* granules, size_t count) {
+  constexpr size_t kBlock = 512;
+  constexpr size_t kScalarBreakRatio = 16;
   const RecentHits<kPlain, kOlderWays> recent_hits(sets, regions);
   uint64_t misses = 0;
+  bool scalar = false;
   size_t i = 0;
-  while (true) {
-    i += recent_hits.Leading(granules + i, count - i);
-    if (i == count) return misses;
-    // Leading stopped at a granule that missed its set's two most recent ways.
-    misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
-    ++i;
+  while (i < count) {
+    const size_t end = count - i > kBlock ? i + kBlock : count;
+    size_t breaks = 0;
+    if (kOlderWays == 15 && scalar) {
+      misses += ReplayTopTwoScalar<kPlain>(sets, regions, granules + i, end - i, breaks);
+      i = end;
+    } else {
+      while (true) {
+        i += recent_hits.Leading(granules + i, end - i, breaks);
+        if (i == end) break;
+        // Leading stopped at a granule that missed its set's two most recent ways.
+        misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
+        ++i;
+        ++breaks;
+      }
+    }
+    scalar = breaks * kScalarBreakRatio > kBlock;
   }
+  return misses;
 }
 
 uint64_t ReplayGranulesKernel(const SetArray& sets, RegionTable& regions,

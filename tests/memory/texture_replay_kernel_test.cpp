@@ -16,6 +16,7 @@
 #include "memory/set_associative_cache.h"
 #include "memory/texture_cache.h"
 #include "memory/texture_replay_kernel.h"
+#include "raster/cell_raster.h"
 
 namespace ontile {
 namespace {
@@ -163,6 +164,48 @@ std::vector<std::vector<uint64_t>> adversarial_calls(const Shape& s, uint64_t se
   return calls;
 }
 
+// Replays `calls` in order through the kernel and through PlainLru: every call's misses, the
+// misses per region, the order of first use and the final ways of every set must agree.
+void expect_replays_as_plain_lru(const Shape& shape, const std::vector<std::vector<uint64_t>>& calls,
+                                 const std::string& what) {
+  std::vector<uint64_t> storage;
+  const SetArray sets = set_array(shape, storage);
+  Placement placement, reference_placement;
+  RegionTable regions(&Placement::resolve, &placement);
+  PlainLru reference(shape);
+  std::map<uint64_t, uint64_t> expected_by_region;
+  uint64_t hits = 0, misses = 0;
+  for (const std::vector<uint64_t>& call : calls) {
+    uint64_t expected = 0;
+    for (const uint64_t g : call) {
+      const uint64_t id = g >> kRegionShift;
+      if (!reference.access(g + reference_placement.offset(id))) {
+        ++expected;
+        ++expected_by_region[id];
+      }
+    }
+    ASSERT_EQ(replay_granules(sets, regions, call.data(), call.size()), expected) << what;
+    misses += expected;
+    hits += call.size() - expected;
+  }
+  // Both outcomes occur (but a cache of one line never hits: repeats are merged when traced).
+  if (shape.sets * shape.ways > 1) EXPECT_GT(hits, 500u) << what;
+  EXPECT_GT(misses, 500u) << what;
+  std::map<uint64_t, uint64_t> by_region;
+  regions.add_misses_to(by_region);
+  EXPECT_EQ(by_region, expected_by_region) << what;
+  EXPECT_EQ(placement.order, reference_placement.order) << what << ": first-use placement";
+  for (uint32_t set = 0; set < shape.sets; ++set) {
+    std::vector<uint64_t> ways;
+    for (uint32_t way = 0; way < shape.ways; ++way) {
+      const uint64_t tag = sets.tags[sets.slot_of(set, way)];
+      if (tag != SetAssociativeCache::kEmpty) ways.push_back(tag);
+    }
+    const std::list<uint64_t>& expected = reference.set(set);
+    ASSERT_EQ(ways, std::vector<uint64_t>(expected.begin(), expected.end())) << what << ", set " << set;
+  }
+}
+
 TEST(TextureReplayKernel, AdversarialStreamsReplayAsThePlainLru) {
   const Shape shapes[] = {{256, 16, 0, 0}, {16, 16, 0, 0}, {64, 4, 0, 0}, {8, 2, 0, 0},
                           {32, 1, 0, 0},   {1, 16, 0, 0},  {1, 1, 0, 0},  {48, 16, 0, 0},
@@ -170,44 +213,55 @@ TEST(TextureReplayKernel, AdversarialStreamsReplayAsThePlainLru) {
                           {128, 16, 0, 1}, {12, 5, 2, 1},  {4, 9, 0, 0},  {2, 17, 0, 0}};
   for (const Shape& shape : shapes) {
     for (uint64_t seed = 1; seed <= 3; ++seed) {
-      const std::string what = name_of(shape) + ", seed " + std::to_string(seed);
-      std::vector<uint64_t> storage;
-      const SetArray sets = set_array(shape, storage);
-      Placement placement, reference_placement;
-      RegionTable regions(&Placement::resolve, &placement);
-      PlainLru reference(shape);
-      std::map<uint64_t, uint64_t> expected_by_region;
-      uint64_t hits = 0, misses = 0;
-      for (const std::vector<uint64_t>& call : adversarial_calls(shape, seed)) {
-        uint64_t expected = 0;
-        for (const uint64_t g : call) {
-          const uint64_t id = g >> kRegionShift;
-          if (!reference.access(g + reference_placement.offset(id))) {
-            ++expected;
-            ++expected_by_region[id];
+      expect_replays_as_plain_lru(shape, adversarial_calls(shape, seed),
+                                  name_of(shape) + ", seed " + std::to_string(seed));
+    }
+  }
+}
+
+// Restores the automatic SIMD target however the test ends.
+struct AutomaticTargetOnExit {
+  ~AutomaticTargetOnExit() { force_simd_target(""); }
+};
+
+// Long calls whose stretches alternate between breaking the most-recent-way runs at almost every
+// granule (a pair of lines of one set, ways + 1 lines thrashing) and long runs of most-recent-way
+// hits, so the 16-way kernel switches between its vector and scalar loops inside a call and
+// from call to call (blocks of 512 granules). On every SIMD target the machine runs.
+TEST(TextureReplayKernel, LongCallsSwitchingLoopsReplayAsThePlainLruOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  const Shape shapes[] = {{256, 16, 0, 0}, {16, 16, 0, 0}, {64, 16, 2, 0}, {128, 16, 0, 1}};
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (const Shape& shape : shapes) {
+      std::mt19937_64 rng(7);
+      const uint64_t set_stride = uint64_t{shape.sets} << shape.index_shift;
+      std::vector<uint64_t> stream;
+      const auto push = [&](uint64_t g) {
+        if (stream.empty() || stream.back() != g) stream.push_back(g);
+      };
+      for (int stretch = 0; stretch < 24; ++stretch) {
+        const uint64_t id = 1 + rng() % 3, base = rng() % 64;
+        const int kind = stretch % 3;
+        for (int i = 0; i < 1500; ++i) {
+          if (kind == 0) {  // two or three lines of one set alternating: way-1 and way-2 hits
+            push(granule(shape, id, base + (i % (2 + stretch % 2)) * set_stride, 0));
+          } else if (kind == 1) {  // ways + 1 lines of one set in a cycle, every few with a fresh line
+            const uint64_t line = i % 7 == 6 ? rng() % 4096 : base + (i % (shape.ways + 1)) * set_stride;
+            push(granule(shape, id, line, 0));
+          } else {  // runs of most-recent-way hits: three lines of different sets, now and then a new one
+            push(granule(shape, id, base + i / 200 * 3 + i % 3, 0));
           }
         }
-        ASSERT_EQ(replay_granules(sets, regions, call.data(), call.size()), expected) << what;
-        misses += expected;
-        hits += call.size() - expected;
       }
-      // Both outcomes occur (but a cache of one line never hits: repeats are merged when traced).
-      if (shape.sets * shape.ways > 1) EXPECT_GT(hits, 500u) << what;
-      EXPECT_GT(misses, 500u) << what;
-      std::map<uint64_t, uint64_t> by_region;
-      regions.add_misses_to(by_region);
-      EXPECT_EQ(by_region, expected_by_region) << what;
-      EXPECT_EQ(placement.order, reference_placement.order) << what << ": first-use placement";
-      for (uint32_t set = 0; set < shape.sets; ++set) {
-        std::vector<uint64_t> ways;
-        for (uint32_t way = 0; way < shape.ways; ++way) {
-          const uint64_t tag = sets.tags[sets.slot_of(set, way)];
-          if (tag != SetAssociativeCache::kEmpty) ways.push_back(tag);
-        }
-        const std::list<uint64_t>& expected = reference.set(set);
-        ASSERT_EQ(ways, std::vector<uint64_t>(expected.begin(), expected.end()))
-            << what << ", set " << set;
+      std::vector<std::vector<uint64_t>> calls;
+      for (size_t at = 0; at < stream.size();) {
+        const size_t length = std::min<size_t>(stream.size() - at, 700 + rng() % 5000);
+        calls.emplace_back(stream.begin() + static_cast<std::ptrdiff_t>(at),
+                           stream.begin() + static_cast<std::ptrdiff_t>(at + length));
+        at += length;
       }
+      expect_replays_as_plain_lru(shape, calls, name_of(shape) + ", target " + target);
     }
   }
 }
