@@ -84,6 +84,9 @@ const CapturedFrame* captured(const std::string& key, const Scene* scene, const 
 void BM_ReplayDemoCartoon(benchmark::State& s) {
   replay_benchmark(s, captured("demo-cartoon", bench::generated_scene("demo", 1.0), "cartoon"));
 }
+void BM_ReplayDemoUniversal(benchmark::State& s) {
+  replay_benchmark(s, captured("demo-universal", bench::generated_scene("demo", 1.0), "universal"));
+}
 void BM_ReplayAtriumLambert(benchmark::State& s) {
   replay_benchmark(s, captured("atrium-lambert", bench::generated_scene("atrium", 1.0), "lambert"));
 }
@@ -92,6 +95,7 @@ void BM_ReplayHelmetLambert(benchmark::State& s) {
 }
 
 BENCHMARK(BM_ReplayDemoCartoon)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_ReplayDemoUniversal)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_ReplayAtriumLambert)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_ReplayHelmetLambert)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
