@@ -90,6 +90,9 @@ void BM_ReplayDemoUniversal(benchmark::State& s) {
 void BM_ReplayAtriumLambert(benchmark::State& s) {
   replay_benchmark(s, captured("atrium-lambert", bench::generated_scene("atrium", 1.0), "lambert"));
 }
+void BM_ReplayAtriumUniversal(benchmark::State& s) {
+  replay_benchmark(s, captured("atrium-universal", bench::generated_scene("atrium", 1.0), "universal"));
+}
 void BM_ReplayHelmetLambert(benchmark::State& s) {
   replay_benchmark(s, captured("helmet-lambert", bench::shared_asset("DamagedHelmet/DamagedHelmet.glb"), "lambert"));
 }
@@ -97,6 +100,7 @@ void BM_ReplayHelmetLambert(benchmark::State& s) {
 BENCHMARK(BM_ReplayDemoCartoon)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_ReplayDemoUniversal)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_ReplayAtriumLambert)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_ReplayAtriumUniversal)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_ReplayHelmetLambert)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
 }  // namespace
