@@ -129,18 +129,18 @@ HWY_INLINE bool AccessAllWays(uint64_t* recent, uint64_t* row, uint64_t line) {
   return hit;
 }
 
-// One granule the long way, in stream order: its region's offset (resolved if new), then the full
-// LRU access; a miss is counted against its region.
-// kPlain: power-of-two sets, line_shift and index_shift 0; kOlderWays: ways - 1 when known at
-// compile time (the default 16-way cache), else 0. With `past_top_two` the caller knows that the
-// granule, taken with its slot's offset, is in neither of its set's two most recent ways.
+// A traced granule in the cache: its region's table slot (the region resolved if new), its line
+// and its set's two places (way 0 in `recent`, ways 1.. in `row`). kPlain: power-of-two sets,
+// line_shift and index_shift 0. kOlderWays: ways - 1 when known at compile time, else 0.
+struct PlacedGranule {
+  size_t slot;
+  uint64_t line;
+  uint64_t* recent;
+  uint64_t* row;
+};
 template <bool kPlain, size_t kOlderWays>
-HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t granule,
-                          bool past_top_two = false) {
+HWY_INLINE PlacedGranule Place(const SetArray& sets, RegionTable& regions, uint64_t granule) {
   const uint64_t id = granule >> kRegionShift;
-  const size_t slot = id & (RegionTable::kSlots - 1);
-  // A region already in its slot had the offset the caller tested the ways with.
-  past_top_two = past_top_two && regions.ids[slot] == id;
   uint64_t line = granule + regions.offset(id);
   uint32_t set;
   if constexpr (kPlain) {
@@ -149,9 +149,24 @@ HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t g
     line >>= sets.line_shift;
     set = sets.index_of_line(line);
   }
-  uint64_t* const recent = sets.tags + set;
   const size_t older_ways = kOlderWays != 0 ? kOlderWays : sets.ways - 1;
-  uint64_t* const row = sets.tags + sets.sets + static_cast<size_t>(set) * older_ways;  // older_of
+  return {id & (RegionTable::kSlots - 1), line, sets.tags + set,
+          sets.tags + sets.sets + static_cast<size_t>(set) * older_ways};  // older_of
+}
+
+// One granule the long way, in stream order: its region's offset (resolved if new), then the full
+// LRU access; a miss is counted against its region.
+// kPlain: power-of-two sets, line_shift and index_shift 0; kOlderWays: ways - 1 when known at
+// compile time (the default 16-way cache), else 0. With `past_top_two` the caller knows that the
+// granule, taken with its slot's offset, is in neither of its set's two most recent ways.
+template <bool kPlain, size_t kOlderWays>
+HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t granule,
+                          bool past_top_two = false) {
+  // A region already in its slot had the offset the caller tested the ways with.
+  const uint64_t id = granule >> kRegionShift;
+  past_top_two = past_top_two && regions.ids[id & (RegionTable::kSlots - 1)] == id;
+  const auto [slot, line, recent, row] = Place<kPlain, kOlderWays>(sets, regions, granule);
+  const size_t older_ways = kOlderWays != 0 ? kOlderWays : sets.ways - 1;
   if (!past_top_two) {
     if (*recent == line) return true;
     if (older_ways > 0 && row[0] == line) {  // way 1: the two swap (the stream alternates often)
@@ -309,19 +324,7 @@ HWY_INLINE uint64_t ReplayTopTwoScalar(const SetArray& sets, RegionTable& region
   constexpr size_t kOlderWays = 15;
   uint64_t misses = 0;
   for (size_t i = 0; i < count; ++i) {
-    const uint64_t granule = granules[i];
-    const uint64_t id = granule >> kRegionShift;
-    const size_t slot = id & (RegionTable::kSlots - 1);
-    uint64_t line = granule + regions.offset(id);
-    uint32_t set;
-    if constexpr (kPlain) {
-      set = static_cast<uint32_t>(line & (sets.sets - 1));
-    } else {
-      line >>= sets.line_shift;
-      set = sets.index_of_line(line);
-    }
-    uint64_t* const recent = sets.tags + set;
-    uint64_t* const row = sets.tags + sets.sets + static_cast<size_t>(set) * kOlderWays;
+    const auto [slot, line, recent, row] = Place<kPlain, kOlderWays>(sets, regions, granules[i]);
     const uint64_t way0 = *recent, way1 = row[0];
     const bool in_way1 = way1 == line;
     breaks += way0 == line ? 0 : 1;
