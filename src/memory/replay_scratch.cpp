@@ -3,19 +3,15 @@
 
 #include <algorithm>
 #include <cstring>
-#include <mutex>
-#include <new>
+#include <utility>
+
+#include "util/free_list.h"
 
 namespace ontile {
 namespace {
 
-struct Pool {
-  std::mutex mutex;
-  std::vector<std::unique_ptr<ReplayScratch>> free;
-};
-
-Pool& pool() {
-  static Pool instance;
+FreeList<std::unique_ptr<ReplayScratch>>& pool() {
+  static FreeList<std::unique_ptr<ReplayScratch>> instance;
   return instance;
 }
 
@@ -44,24 +40,10 @@ void ReplayScratch::prepare(size_t tile_count, size_t worker_count, size_t group
   if (group_tags.size() < group_count) group_tags.resize(group_count);
 }
 
-ReplayScratchLease::ReplayScratchLease() {
-  {
-    const std::lock_guard<std::mutex> lock(pool().mutex);
-    if (!pool().free.empty()) {
-      scratch_ = std::move(pool().free.back());
-      pool().free.pop_back();
-    }
-  }
+ReplayScratchLease::ReplayScratchLease() : scratch_(pool().take()) {
   if (!scratch_) scratch_ = std::make_unique<ReplayScratch>();
 }
 
-ReplayScratchLease::~ReplayScratchLease() {
-  const std::lock_guard<std::mutex> lock(pool().mutex);
-  try {
-    pool().free.push_back(std::move(scratch_));
-  } catch (const std::bad_alloc&) {
-    // No room to keep it: freed instead, the next lease makes a new one.
-  }
-}
+ReplayScratchLease::~ReplayScratchLease() { pool().give_back(std::move(scratch_)); }
 
 }  // namespace ontile
