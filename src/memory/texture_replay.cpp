@@ -146,6 +146,7 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
   ontile::parallel_for(size_t{0}, tile_count, [&](size_t t) {
     const auto worker = static_cast<uint32_t>(tbb::this_task_arena::current_thread_index());
     ReplayScratch::Worker& w = scratch->workers[worker];
+    const SlotObjectUse slot_use(&w);
     ReplayScratch::Tile& tile = scratch->tiles[t];
     tile.worker = worker;
     tile.region_ids_begin = static_cast<uint32_t>(w.region_ids.size());

@@ -70,4 +70,28 @@ void parallel_for(Index first, Index last, const Body& body) {
 #endif
 }
 
+// While alive, declares one loop body's use of an object kept per task-arena slot (indexed by
+// tbb::this_task_arena::current_thread_index()) ordered after the previous body's use of it:
+// oneTBB gives a slot to one thread at a time and hands it over through its own synchronisation,
+// which TSan cannot see, so a body that takes over another thread's slot would be reported
+// racing with that thread's earlier bodies. A no-op outside ThreadSanitizer builds.
+class SlotObjectUse {
+ public:
+  explicit SlotObjectUse(const void* object) : object_(object) {
+#ifdef ONTILE_THREAD_SANITIZER
+    __tsan_acquire(const_cast<void*>(object_));
+#endif
+  }
+  ~SlotObjectUse() {
+#ifdef ONTILE_THREAD_SANITIZER
+    __tsan_release(const_cast<void*>(object_));
+#endif
+  }
+  SlotObjectUse(const SlotObjectUse&) = delete;
+  SlotObjectUse& operator=(const SlotObjectUse&) = delete;
+
+ private:
+  [[maybe_unused]] const void* object_;
+};
+
 }  // namespace ontile
