@@ -26,8 +26,23 @@ void store_quads(const float* const channels[4], const int32_t* first_fragment, 
 void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
                      float* const channels[4]);
 
+// The same on code planes (tile_memory.h: 8-bit RGBA pixels as their four bytes): codes[f] is
+// fragment f's packed code. Copies of whole quad rows (two adjacent pixels) for full quads.
+void store_full_quad_codes(const uint32_t* codes, const int32_t* first_fragment,
+                           const uint32_t* pixel, int quad_count, int row_pixels, uint32_t* plane);
+// store_full_quad_codes of `quads` quads side by side from plane pixel `top` on, fragments
+// codes[0 .. 4 quads) in order (a whole-tile batch's row segment).
+void store_quad_row_codes(const uint32_t* codes, int quads, uint32_t* top, int row_pixels);
+void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,
+                      const uint8_t* lanes, int quad_count, int row_pixels, uint32_t* plane);
+// load_full_quads of a code plane, decoded as decode_pixel does (sRGB or UNORM colour, UNORM
+// alpha: table reads, so every target gives the same bits).
+void load_full_quad_codes(const uint32_t* plane, const uint32_t* pixel, int quad_count,
+                          int row_pixels, bool srgb, float* const channels[4]);
+
 // Clears as fills: plane[0 .. count) = value, and depth[0 .. count) = value.
 void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value);
 void fill_depth(float* depth, size_t count, float value);
+void fill_codes(uint32_t* plane, size_t count, uint32_t code);
 
 }  // namespace ontile
