@@ -19,18 +19,20 @@ constexpr int kMaxRowValues = 64 * 8;
 // per-pixel path.
 bool row_fits(const TileRect& rect, int samples) { return rect.width * samples <= kMaxRowValues; }
 
-// `rows` rows of `count` packed 8-bit RGBA pixels between a code plane (rows plane_row_pixels
-// apart) and a surface (rows row_bytes apart), the pointers stepped rather than recomputed.
-void copy_rows(const uint32_t* plane, size_t plane_row_pixels, int count, int rows, uint8_t* dst,
-               size_t row_bytes) {
-  for (int y = 0; y < rows; ++y, plane += plane_row_pixels, dst += row_bytes) {
-    std::memcpy(dst, plane, sizeof(uint32_t) * static_cast<size_t>(count));
-  }
+// `rows` rows of `bytes` bytes, rows src_step and dst_step apart: the pointers stepped rather
+// than recomputed, and the common tile widths (16, 32 and 64 RGBA8 pixels) copied by
+// fixed-size copies the compiler inlines rather than a library call per row.
+template <size_t kBytes>
+void copy_fixed_rows(const uint8_t* src, size_t src_step, uint8_t* dst, size_t dst_step, int rows) {
+  for (int y = 0; y < rows; ++y, src += src_step, dst += dst_step) std::memcpy(dst, src, kBytes);
 }
-void copy_rows(const uint8_t* src, size_t row_bytes, int count, int rows, uint32_t* plane,
-               size_t plane_row_pixels) {
-  for (int y = 0; y < rows; ++y, plane += plane_row_pixels, src += row_bytes) {
-    std::memcpy(plane, src, sizeof(uint32_t) * static_cast<size_t>(count));
+void copy_rows(const uint8_t* src, size_t src_step, uint8_t* dst, size_t dst_step, size_t bytes, int rows) {
+  switch (bytes) {
+    case 64: return copy_fixed_rows<64>(src, src_step, dst, dst_step, rows);
+    case 128: return copy_fixed_rows<128>(src, src_step, dst, dst_step, rows);
+    case 256: return copy_fixed_rows<256>(src, src_step, dst, dst_step, rows);
+    default:
+      for (int y = 0; y < rows; ++y, src += src_step, dst += dst_step) std::memcpy(dst, src, bytes);
   }
 }
 
@@ -42,7 +44,8 @@ void load_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileR
     const uint8_t* first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
     const size_t pitch = rect.height > 1
         ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
-    copy_rows(first_row, pitch, n, rect.height, codes, memory.index(0, 1, 0));
+    copy_rows(first_row, pitch, reinterpret_cast<uint8_t*>(codes), sizeof(uint32_t) * memory.index(0, 1, 0),
+              sizeof(uint32_t) * static_cast<size_t>(n), rect.height);
     return;
   }
   glm::vec4 row[kMaxRowValues];
@@ -78,7 +81,9 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
     const size_t pitch = rect.height > 1
         ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
     if (codes) {  // the plane's bytes are the surface's: row copies
-      copy_rows(memory.code_plane(attachment), memory.index(0, 1, 0), n, rect.height, first_row, pitch);
+      copy_rows(reinterpret_cast<const uint8_t*>(memory.code_plane(attachment)),
+                sizeof(uint32_t) * memory.index(0, 1, 0), first_row, pitch,
+                sizeof(uint32_t) * static_cast<size_t>(n), rect.height);
       return;
     }
     encode_pixel_rows(desc.surface->format(), memory.color_plane(attachment), memory.index(0, 1, 0),
