@@ -93,25 +93,31 @@ void LoadFullQuadsKernel(const glm::vec4* plane, const uint32_t* pixel, int quad
   }
 }
 
-// A row of `quads` side-by-side full quads with consecutive fragments (a whole-tile batch's row
-// segment): their codes as 64-bit pixel pairs, even pairs to the top row and odd pairs to the
+// Rows of side-by-side full quads with consecutive fragments (a whole-tile batch's row
+// segments): segment s has quads[s] quads from batch quad first[s] on, its top left at plane
+// pixel top[s]; the codes as 64-bit pixel pairs, even pairs to the top row and odd pairs to the
 // bottom row. Copies only.
-void StoreQuadRowCodesKernel(const uint32_t* codes, int quads, uint32_t* top, int row_pixels) {
-  uint32_t* const bottom = top + row_pixels;
-  int q = 0;
+void StoreQuadRowsCodesKernel(const uint32_t* codes, const int32_t* first, const int32_t* quads,
+                              const uint32_t* top, int segments, int row_pixels, uint32_t* plane) {
+  for (int s = 0; s < segments; ++s) {
+    const uint32_t* const src = codes + 4 * first[s];
+    uint32_t* const top_row = plane + top[s];
+    uint32_t* const bottom_row = top_row + row_pixels;
+    int q = 0;
 #if HWY_TARGET != HWY_SCALAR
-  const hn::ScalableTag<uint64_t> d;
-  const int n = static_cast<int>(hn::Lanes(d));  // quads per two vectors
-  for (; q + n <= quads; q += n) {
-    const uint64_t* src = reinterpret_cast<const uint64_t*>(codes + 4 * q);
-    const auto low = hn::LoadU(d, src), high = hn::LoadU(d, src + n);
-    hn::StoreU(hn::ConcatEven(d, high, low), d, reinterpret_cast<uint64_t*>(top + 2 * q));
-    hn::StoreU(hn::ConcatOdd(d, high, low), d, reinterpret_cast<uint64_t*>(bottom + 2 * q));
-  }
+    const hn::ScalableTag<uint64_t> d;
+    const int n = static_cast<int>(hn::Lanes(d));  // quads per two vectors
+    for (; q + n <= quads[s]; q += n) {
+      const uint64_t* pairs = reinterpret_cast<const uint64_t*>(src + 4 * q);
+      const auto low = hn::LoadU(d, pairs), high = hn::LoadU(d, pairs + n);
+      hn::StoreU(hn::ConcatEven(d, high, low), d, reinterpret_cast<uint64_t*>(top_row + 2 * q));
+      hn::StoreU(hn::ConcatOdd(d, high, low), d, reinterpret_cast<uint64_t*>(bottom_row + 2 * q));
+    }
 #endif
-  for (; q < quads; ++q) {
-    std::memcpy(top + 2 * q, codes + 4 * q, 2 * sizeof(uint32_t));
-    std::memcpy(bottom + 2 * q, codes + 4 * q + 2, 2 * sizeof(uint32_t));
+    for (; q < quads[s]; ++q) {
+      std::memcpy(top_row + 2 * q, src + 4 * q, 2 * sizeof(uint32_t));
+      std::memcpy(bottom_row + 2 * q, src + 4 * q + 2, 2 * sizeof(uint32_t));
+    }
   }
 }
 
@@ -217,7 +223,7 @@ HWY_EXPORT(StoreFullQuadsKernel);
 HWY_EXPORT(StoreQuadsKernel);
 HWY_EXPORT(LoadFullQuadsKernel);
 HWY_EXPORT(LoadFullQuadCodesKernel);
-HWY_EXPORT(StoreQuadRowCodesKernel);
+HWY_EXPORT(StoreQuadRowsCodesKernel);
 HWY_EXPORT(FillPlaneKernel);
 HWY_EXPORT(FillDepthKernel);
 HWY_EXPORT(FillCodesKernel);
@@ -242,8 +248,9 @@ void store_full_quad_codes(const uint32_t* codes, const int32_t* first_fragment,
   }
 }
 
-void store_quad_row_codes(const uint32_t* codes, int quads, uint32_t* top, int row_pixels) {
-  HWY_DYNAMIC_DISPATCH(StoreQuadRowCodesKernel)(codes, quads, top, row_pixels);
+void store_quad_rows_codes(const uint32_t* codes, const int32_t* first, const int32_t* quads,
+                           const uint32_t* top, int segments, int row_pixels, uint32_t* plane) {
+  HWY_DYNAMIC_DISPATCH(StoreQuadRowsCodesKernel)(codes, first, quads, top, segments, row_pixels, plane);
 }
 
 void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,

@@ -30,9 +30,10 @@ void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_cou
 // fragment f's packed code. Copies of whole quad rows (two adjacent pixels) for full quads.
 void store_full_quad_codes(const uint32_t* codes, const int32_t* first_fragment,
                            const uint32_t* pixel, int quad_count, int row_pixels, uint32_t* plane);
-// store_full_quad_codes of `quads` quads side by side from plane pixel `top` on, fragments
-// codes[0 .. 4 quads) in order (a whole-tile batch's row segment).
-void store_quad_row_codes(const uint32_t* codes, int quads, uint32_t* top, int row_pixels);
+// store_full_quad_codes of a whole-tile batch's row segments: segment s is quads[s] quads side
+// by side from plane pixel top[s] on, fragments 4 first[s] on in order.
+void store_quad_rows_codes(const uint32_t* codes, const int32_t* first, const int32_t* quads,
+                           const uint32_t* top, int segments, int row_pixels, uint32_t* plane);
 void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,
                       const uint8_t* lanes, int quad_count, int row_pixels, uint32_t* plane);
 // load_full_quads of a code plane, decoded as decode_pixel does (sRGB or UNORM colour, UNORM

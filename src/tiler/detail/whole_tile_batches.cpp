@@ -64,7 +64,7 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   // offset in the cell advance by 2 per quad, and every 4 quads share a cell's planes.
   int x = qx, y = qy;
   // The row segments: first batch quad, quads, tile pixel of the first quad's top left.
-  int segment_first[kBatchQuads], segment_quads[kBatchQuads];
+  int32_t segment_first[kBatchQuads], segment_quads[kBatchQuads];
   uint32_t segment_pixel[kBatchQuads];
   int segments = 0;
   for (int i = 0; i < kBatchQuads;) {
@@ -213,10 +213,8 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
         store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, width, plane);
         continue;
       }
-      for (int s = 0; s < segments; ++s) {  // every quad: row segment by row segment
-        store_quad_row_codes(codes_[0][k] + segment_first[s] * kQuadLanes, segment_quads[s],
-                             plane + segment_pixel[s], width);
-      }
+      store_quad_rows_codes(codes_[0][k], segment_first, segment_quads, segment_pixel, segments, width,
+                            plane);  // every quad: row segment by row segment
       continue;
     }
     const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
