@@ -1,6 +1,7 @@
 // The write-back of whole shaded quads on SIMD lanes: a batch's structure-of-arrays outputs
-// interleaved into a tile plane of RGBA values, two pixels of a quad row per store; the inverse
-// read (framebuffer fetch of a batch); and the fills of cleared tile planes.
+// interleaved into a tile plane of RGBA values, two pixels of a quad row per store, or its
+// packed 8-bit codes into a code plane (tile_memory.h); the inverse reads (framebuffer fetch of
+// a batch); and the fills of cleared tile planes.
 #pragma once
 #include <cstddef>
 #include <cstdint>

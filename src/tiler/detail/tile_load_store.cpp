@@ -1,7 +1,8 @@
 // Tile load and store (see tile_load_store.h). The memory model (memory/memory_model.h) prices
 // what moves; this file moves the data. A tile row (its pixels, samples adjacent) is contiguous in
 // tile memory and in the surface, so loads and stores convert whole rows (pixel_format.h row
-// functions, SIMD for the hot formats) and clears are fills of one quantised value.
+// functions, SIMD for the hot formats) or, for 8-bit RGBA code planes, copy them, and clears
+// are fills of one quantised value (or its code).
 #include "tiler/detail/tile_load_store.h"
 
 #include <algorithm>
