@@ -15,6 +15,7 @@
 #include <limits>
 #include <string>
 
+#include "raster/pixel_encode_quantized_simd.h"
 #include "raster/pixel_format.h"
 #include "raster/pixel_quantize_simd.h"
 #include "raster/srgb8_tables.h"
@@ -54,8 +55,7 @@ HWY_INLINE hn::Vec<DF> quantize_unorm(DF df, hn::Vec<DF> v, hn::Vec<DF> max, con
 // code 255), one step up the thresholds (srgb8_tables.h: buckets are narrower than the
 // spacing of thresholds), and 0 for NaN, zeros and negatives.
 template <class DF>
-HWY_INLINE hn::Vec<DF> quantize_srgb8(DF df, hn::Vec<DF> v, const SrgbQuantizeTables& t,
-                                      const float* decode) {
+HWY_INLINE hn::Vec<hn::RebindToSigned<DF>> srgb8_code(DF df, hn::Vec<DF> v, const SrgbQuantizeTables& t) {
   const hn::RebindToSigned<DF> di;
   const hn::RebindToUnsigned<DF> du;
   const auto offset = hn::BitCast(di, hn::Sub(hn::BitCast(du, v), hn::Set(du, kSrgb8BucketLowestBits)));
@@ -64,8 +64,13 @@ HWY_INLINE hn::Vec<DF> quantize_srgb8(DF df, hn::Vec<DF> v, const SrgbQuantizeTa
   auto code = hn::GatherIndex(di, t.bucket_start, bucket);
   const auto above = hn::RebindMask(di, hn::Ge(v, hn::GatherIndex(df, t.thresholds, code)));
   code = hn::Sub(code, hn::VecFromMask(di, above));
-  code = hn::IfThenElseZero(hn::RebindMask(di, hn::Gt(v, hn::Zero(df))), code);
-  return hn::GatherIndex(df, decode, code);
+  return hn::IfThenElseZero(hn::RebindMask(di, hn::Gt(v, hn::Zero(df))), code);
+}
+
+template <class DF>
+HWY_INLINE hn::Vec<DF> quantize_srgb8(DF df, hn::Vec<DF> v, const SrgbQuantizeTables& t,
+                                      const float* decode) {
+  return hn::GatherIndex(df, decode, srgb8_code(df, v, t));
 }
 
 void QuantizeSrgb8AlphaKernel(float* r, float* g, float* b, float* a, int count) {
@@ -110,6 +115,81 @@ void QuantizeUnormRgbaKernel(float* r, float* g, float* b, float* a, int count, 
     g[i] = unorm_to_float(float_to_unorm(g[i], rgb_bits), rgb_bits);
     b[i] = unorm_to_float(float_to_unorm(b[i], rgb_bits), rgb_bits);
     a[i] = unorm_to_float(float_to_unorm(a[i], alpha_bits), alpha_bits);
+  }
+}
+
+// The codes of quantize_srgb8_alpha_simd / quantize_unorm_rgba_simd (8 bits) packed as the
+// pixel's four bytes (R lowest): what encode_pixel writes, without the decode.
+void QuantizeRgba8CodesKernel(const float* r, const float* g, const float* b, const float* a,
+                              int count, bool srgb, uint32_t* codes) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const size_t n = hn::Lanes(df);
+  const SrgbQuantizeTables& t = srgb_quantize_tables();
+  const float* at = unorm_thresholds(8).at.data();
+  const auto max = hn::Set(df, 255.0f);
+  const auto rgb_code = [&](hn::Vec<decltype(df)> v) {
+    return srgb ? srgb8_code(df, v, t) : unorm_code(df, v, max, at);
+  };
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto cr = rgb_code(hn::LoadU(df, r + i));
+    const auto cg = rgb_code(hn::LoadU(df, g + i));
+    const auto cb = rgb_code(hn::LoadU(df, b + i));
+    const auto ca = unorm_code(df, hn::LoadU(df, a + i), max, at);
+    const auto packed = hn::Or(hn::Or(cr, hn::ShiftLeft<8>(cg)),
+                               hn::Or(hn::ShiftLeft<16>(cb), hn::ShiftLeft<24>(ca)));
+    hn::StoreU(packed, di, reinterpret_cast<int32_t*>(codes + i));
+  }
+  const PixelFormat format = srgb ? PixelFormat::RGBA8_SRGB : PixelFormat::RGBA8_UNORM;
+  for (; i < static_cast<size_t>(count); ++i) {
+    uint8_t bytes[4];
+    encode_pixel(format, glm::vec4(r[i], g[i], b[i], a[i]), bytes);
+    codes[i] = bytes[0] | (uint32_t{bytes[1]} << 8) | (uint32_t{bytes[2]} << 16) | (uint32_t{bytes[3]} << 24);
+  }
+}
+
+// QuantizeRgba8CodesKernel for values that are decoded codes of the format (a functor's
+// BatchOutput::output0_codes_of promise), found without the threshold steps: UNORM by the
+// rounded product (a decoded code c times 255 is within c * 2^-24 of c), sRGB by the float
+// bits' bucket (pixel_encode_quantized_simd.h: at most one code's value per bucket; values below
+// the first bucket, zeros included, clamp to the last, which holds code 0).
+void Rgba8CodesOfDecodedKernel(const float* r, const float* g, const float* b, const float* a,
+                               int count, bool srgb, uint32_t* codes) {
+  using Tables = QuantizedCodeTables;
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const hn::RebindToUnsigned<decltype(df)> du;
+  const size_t n = hn::Lanes(df);
+  const Tables& t = quantized_code_tables();
+  const int32_t* srgb_codes = reinterpret_cast<const int32_t*>(t.codes);  // read as 4-byte words
+  const auto max = hn::Set(df, 255.0f);
+  const auto lowest = hn::Set(du, Tables::kLowestBits);
+  const auto last_bucket = hn::Set(du, Tables::kBuckets - 1);
+  const auto byte = hn::Set(di, 0xFF);
+  // Rounded to an integer by adding 2^23 (its last mantissa bit weighs 1; ties to even, as no
+  // decoded code's product is near one): the code is the sum's low byte, and shifting the sum
+  // left by 8 or more drops its exponent bits, so only R needs the mask.
+  const auto two_23 = hn::Set(df, 8388608.0f);
+  const auto unorm = [&](hn::Vec<decltype(df)> v) { return hn::BitCast(di, hn::Add(hn::Mul(v, max), two_23)); };
+  const auto rgb_code = [&](hn::Vec<decltype(df)> v) {
+    if (!srgb) return unorm(v);
+    const auto bucket = hn::Min(
+        hn::ShiftRight<23 - Tables::kBucketMantissaBits>(hn::Sub(hn::BitCast(du, v), lowest)), last_bucket);
+    return hn::And(hn::GatherOffset(di, srgb_codes, hn::BitCast(di, bucket)), byte);
+  };
+  size_t i = 0;
+  for (; i + n <= static_cast<size_t>(count); i += n) {
+    const auto cr = rgb_code(hn::LoadU(df, r + i));
+    const auto cg = rgb_code(hn::LoadU(df, g + i));
+    const auto cb = rgb_code(hn::LoadU(df, b + i));
+    const auto ca = unorm(hn::LoadU(df, a + i));
+    const auto packed = hn::Or(hn::Or(hn::And(cr, byte), hn::ShiftLeft<8>(cg)),
+                               hn::Or(hn::ShiftLeft<16>(cb), hn::ShiftLeft<24>(ca)));
+    hn::StoreU(packed, di, reinterpret_cast<int32_t*>(codes + i));
+  }
+  if (i < static_cast<size_t>(count)) {
+    QuantizeRgba8CodesKernel(r + i, g + i, b + i, a + i, count - static_cast<int>(i), srgb, codes + i);
   }
 }
 
@@ -173,12 +253,24 @@ const SrgbQuantizeTables& srgb_quantize_tables() {
 
 HWY_EXPORT(QuantizeSrgb8AlphaKernel);
 HWY_EXPORT(QuantizeUnormRgbaKernel);
+HWY_EXPORT(QuantizeRgba8CodesKernel);
+HWY_EXPORT(Rgba8CodesOfDecodedKernel);
 
 void quantize_srgb8_alpha_simd(float* r, float* g, float* b, float* a, int count) {
   HWY_DYNAMIC_DISPATCH(QuantizeSrgb8AlphaKernel)(r, g, b, a, count);
 }
 void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int bits) {
   HWY_DYNAMIC_DISPATCH(QuantizeUnormRgbaKernel)(r, g, b, a, count, bits);
+}
+
+void quantize_rgba8_codes_simd(const float* r, const float* g, const float* b, const float* a,
+                               int count, bool srgb, uint32_t* codes) {
+  HWY_DYNAMIC_DISPATCH(QuantizeRgba8CodesKernel)(r, g, b, a, count, srgb, codes);
+}
+
+void rgba8_codes_of_decoded_simd(const float* r, const float* g, const float* b, const float* a,
+                                 int count, bool srgb, uint32_t* codes) {
+  HWY_DYNAMIC_DISPATCH(Rgba8CodesOfDecodedKernel)(r, g, b, a, count, srgb, codes);
 }
 
 }  // namespace ontile

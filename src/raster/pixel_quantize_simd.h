@@ -36,5 +36,13 @@ void quantize_srgb8_alpha_simd(float* r, float* g, float* b, float* a, int count
 constexpr int kUnormBits8_8 = 8 | 8 << 8;
 constexpr int kUnormBits10_2 = 10 | 2 << 8;
 void quantize_unorm_rgba_simd(float* r, float* g, float* b, float* a, int count, int bits);
+// The 8-bit RGBA codes of r, g, b, a (sRGB or UNORM colour, UNORM alpha) packed per pixel
+// as encode_pixel's four bytes read as a little-endian uint32_t (R in the lowest byte).
+void quantize_rgba8_codes_simd(const float* r, const float* g, const float* b, const float* a,
+                               int count, bool srgb, uint32_t* codes);
+// quantize_rgba8_codes_simd where every value is a decoded code of the format (colour and
+// alpha): cheaper, and only for such values (BatchOutput::output0_codes_of).
+void rgba8_codes_of_decoded_simd(const float* r, const float* g, const float* b, const float* a,
+                                 int count, bool srgb, uint32_t* codes);
 
 }  // namespace ontile

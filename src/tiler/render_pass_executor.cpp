@@ -310,7 +310,8 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
   const auto tiles_start = std::chrono::steady_clock::now();
   tbb::enumerable_thread_specific<TileMemory> memories;
   tbb::combinable<TileCounters> counters;
-  const int attachment_count = static_cast<int>(pass.attachments.size());
+  std::vector<PixelFormat> attachment_formats;
+  for (const AttachmentDesc& a : pass.attachments) attachment_formats.push_back(a.format);
   std::vector<TileTrace> traces(grid.tile_count());
   report.tile_stats.resize(grid.tile_count());
   std::atomic<uint32_t> tiles_started{0};
@@ -321,7 +322,7 @@ PassReport execute_render_pass(const RenderPassDesc& pass, const TilerConfig& co
     stats.order = tiles_started.fetch_add(1, std::memory_order_relaxed);
     stats.thread = tbb::this_task_arena::current_thread_index();
     TileMemory& memory = memories.local();
-    memory.prepare(attachment_count, grid.tile_width_px, grid.tile_height_px, pass.samples);
+    memory.prepare(attachment_formats, grid.tile_width_px, grid.tile_height_px, pass.samples);
     TileCounters tile_counters;
     TileTrace& trace = traces[tile];
     trace.texture_granules = take_granule_buffer();

@@ -2,7 +2,8 @@
 // functions, bit for bit, on every SIMD target: encodes of rows holding every code's decoded
 // value of RGBA8 (UNORM, sRGB) and RGB10A2, with one value nudged off its code at each position
 // of a vector (the exact path takes over there), and quantisation of values at and one step
-// either side of every UNORM threshold of 2, 8 and 10 bits and every sRGB threshold.
+// either side of every UNORM threshold of 2, 8 and 10 bits and every sRGB threshold (as values
+// and, for RGBA8, as tile memory's packed codes).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -145,6 +146,65 @@ TEST(PixelRows, QuantizeMatchesAtEveryThresholdOnEveryTarget) {
         ASSERT_TRUE(same_bits(quantize_pixel(format, in), glm::vec4(q[0][i], q[1][i], q[2][i], q[3][i])))
             << format_name(format) << " value " << i << ": " << in.x << " " << in.y << " " << in.z
             << " " << in.w;
+      }
+    }
+  }
+}
+
+// The codes kernel of tile memory's code planes (TileMemory::holds_codes): encode_pixel's four
+// bytes for the same values, every decoded code included (they give their own codes back).
+TEST(PixelRows, Rgba8CodesMatchEncodeAtEveryThresholdOnEveryTarget) {
+  std::vector<float> values = around_thresholds();
+  for (int c = 0; c < 256; ++c) {
+    values.push_back(srgb8_decode_table()[c]);
+    values.push_back(unorm8_decode_table()[c]);
+  }
+  const int count = static_cast<int>(values.size());
+  const AutomaticTargetOnExit restore;
+  for (const std::string& target : simd_targets()) {
+    SCOPED_TRACE(target);
+    force_simd_target(target);
+    for (const PixelFormat format : {PixelFormat::RGBA8_SRGB, PixelFormat::RGBA8_UNORM}) {
+      std::vector<float> ch[4];
+      for (int c = 0; c < 4; ++c) {
+        ch[c].resize(count);
+        for (int i = 0; i < count; ++i) ch[c][i] = values[(i + 13 * c) % count];
+      }
+      std::vector<uint32_t> codes(count);
+      quantize_rgba8_codes_simd(ch[0].data(), ch[1].data(), ch[2].data(), ch[3].data(), count,
+                                format == PixelFormat::RGBA8_SRGB, codes.data());
+      for (int i = 0; i < count; ++i) {
+        const glm::vec4 in(ch[0][i], ch[1][i], ch[2][i], ch[3][i]);
+        uint8_t expected[4];
+        encode_pixel(format, in, expected);
+        ASSERT_EQ(0, std::memcmp(&codes[i], expected, 4))
+            << format_name(format) << " value " << i << ": " << in.x << " " << in.y << " " << in.z
+            << " " << in.w;
+      }
+    }
+  }
+}
+
+// The codes of decoded codes (BatchOutput::output0_codes_of) by the cheaper kernel: each code.
+TEST(PixelRows, Rgba8CodesOfDecodedCodesOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  for (const std::string& target : simd_targets()) {
+    SCOPED_TRACE(target);
+    force_simd_target(target);
+    for (const PixelFormat format : {PixelFormat::RGBA8_SRGB, PixelFormat::RGBA8_UNORM}) {
+      const std::vector<glm::vec4> pixels = decoded_codes(format, 256, 256, 1031);
+      const int count = static_cast<int>(pixels.size());
+      std::vector<float> ch[4];
+      for (int c = 0; c < 4; ++c) {
+        for (const glm::vec4& p : pixels) ch[c].push_back(p[c]);
+      }
+      std::vector<uint32_t> codes(count);
+      rgba8_codes_of_decoded_simd(ch[0].data(), ch[1].data(), ch[2].data(), ch[3].data(), count,
+                                  format == PixelFormat::RGBA8_SRGB, codes.data());
+      for (int i = 0; i < count; ++i) {
+        uint8_t expected[4];
+        encode_pixel(format, pixels[i], expected);
+        ASSERT_EQ(0, std::memcmp(&codes[i], expected, 4)) << format_name(format) << " pixel " << i;
       }
     }
   }

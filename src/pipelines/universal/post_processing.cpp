@@ -29,6 +29,7 @@ class CopyShader final : public FragmentShader {
       : source_(std::move(source)), sampler_(sampler) {}
   bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   uint32_t varyings_read() const override { return kUvVaryings; }
+  int outputs_always_written() const override { return 1; }  // every channel of every fragment, both paths
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
     if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
@@ -57,6 +58,7 @@ class TonemapShader final : public FragmentShader {
       : source_(std::move(source)), sampler_(sampler), exposure_(exposure) {}
   bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   uint32_t varyings_read() const override { return kUvVaryings; }
+  int outputs_always_written() const override { return 1; }  // every channel of every fragment, both paths
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Nearest 1:1 reads of the whole batch on SIMD lanes (the same texels and trace as
     // sample_quad), then the tone curve on lanes with the scalar curve's operations.

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "raster/blend.h"
+#include "raster/pixel_quantize_simd.h"
 #include "tiler/detail/hierarchical_depth.h"
 #include "tiler/detail/quad_store_simd.h"
 
@@ -212,8 +213,15 @@ void QuadBatcher::shade_invocation(int inv) {
   if (opaque_writes_) {
     for (int k = 0; k < b.color_output_count; ++k) {
       const PixelFormat format = ctx.pass.attachments[ctx.subpass.color_outputs[k]].format;
-      if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
       // The padded count keeps every SIMD vector whole; padding lanes are never written back.
+      if (TileMemory::holds_codes(format)) {  // decoded codes give their own codes back
+        const auto codes_of = k == 0 && out.output0_codes_of == format ? rgba8_codes_of_decoded_simd
+                                                                       : quantize_rgba8_codes_simd;
+        codes_of(out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3], padded,
+                 format == PixelFormat::RGBA8_SRGB, codes_[inv][k]);
+        continue;
+      }
+      if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
       quantize_pixels(format, out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3],
                       padded);
     }
@@ -354,6 +362,15 @@ void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
         const int f = slot_[inv][q] * kQuadLanes + lane;
         for (size_t k = 0; k < outputs.size(); ++k) {
           const int a = outputs[k];
+          if (memory_->holds_codes(a)) {
+            if (opaque_writes_) {
+              memory_->code_plane(a)[i] = codes_[inv][k][f];
+            } else {
+              memory_->set_color(a, i, blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f),
+                                                   memory_->color(a, i)));
+            }
+            continue;
+          }
           glm::vec4& dst = memory_->color_plane(a)[i];
           if (opaque_writes_) {
             dst = out.get(static_cast<int>(k), f);
@@ -389,6 +406,14 @@ void QuadBatcher::write_back_single_sample() {
   uint8_t partial_lanes[kBatchQuads];
   const auto store_triangle = [&] {
     for (size_t k = 0; k < outputs.size(); ++k) {
+      if (memory_->holds_codes(outputs[k])) {
+        uint32_t* const codes = memory_->code_plane(outputs[k]);
+        if (full_quads) store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, memory_->width(), codes);
+        if (partial_quads) {
+          store_quad_codes(codes_[0][k], partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), codes);
+        }
+        continue;
+      }
       const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
                                         out.color[k][3]};
       glm::vec4* const plane = memory_->color_plane(outputs[k]);

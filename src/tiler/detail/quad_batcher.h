@@ -202,6 +202,9 @@ class QuadBatcher {
   int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1
   std::unique_ptr<FragmentBatch> batch_;
   std::unique_ptr<BatchOutput> outputs_[kMaxSamples];
+  // Opaque outputs into code planes (TileMemory::holds_codes), per invocation and output: each
+  // fragment's packed 8-bit code, quantised per batch (the BatchOutput floats stay as shaded).
+  alignas(64) uint32_t codes_[kMaxSamples][kMaxColorTargets][kBatchFragments];
   // Interpolation inputs per batch fragment.
   alignas(64) float fx_[kBatchFragments], fy_[kBatchFragments];
   alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];

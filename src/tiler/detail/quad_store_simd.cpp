@@ -1,12 +1,16 @@
 // SIMD quad write-back and plane fills (see quad_store_simd.h), compiled per target by
 // Highway's foreach_target.
-// Loads, shuffles and stores only, so every target writes the same bits.
+// Loads, shuffles, table reads and stores only, so every target writes the same bits.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tiler/detail/quad_store_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include "tiler/detail/quad_store_simd.h"
+
+#include <cstring>
+
+#include "raster/pixel_format.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -89,6 +93,66 @@ void LoadFullQuadsKernel(const glm::vec4* plane, const uint32_t* pixel, int quad
   }
 }
 
+// Rows of side-by-side full quads with consecutive fragments (a whole-tile batch's row
+// segments): segment s has quads[s] quads from batch quad first[s] on, its top left at plane
+// pixel top[s]; the codes as 64-bit pixel pairs, even pairs to the top row and odd pairs to the
+// bottom row. Copies only.
+void StoreQuadRowsCodesKernel(const uint32_t* codes, const int32_t* first, const int32_t* quads,
+                              const uint32_t* top, int segments, int row_pixels, uint32_t* plane) {
+  for (int s = 0; s < segments; ++s) {
+    const uint32_t* const src = codes + 4 * first[s];
+    uint32_t* const top_row = plane + top[s];
+    uint32_t* const bottom_row = top_row + row_pixels;
+    int q = 0;
+#if HWY_TARGET != HWY_SCALAR
+    const hn::ScalableTag<uint64_t> d;
+    const int n = static_cast<int>(hn::Lanes(d));  // quads per two vectors
+    for (; q + n <= quads[s]; q += n) {
+      const uint64_t* pairs = reinterpret_cast<const uint64_t*>(src + 4 * q);
+      const auto low = hn::LoadU(d, pairs), high = hn::LoadU(d, pairs + n);
+      hn::StoreU(hn::ConcatEven(d, high, low), d, reinterpret_cast<uint64_t*>(top_row + 2 * q));
+      hn::StoreU(hn::ConcatOdd(d, high, low), d, reinterpret_cast<uint64_t*>(bottom_row + 2 * q));
+    }
+#endif
+    for (; q < quads[s]; ++q) {
+      std::memcpy(top_row + 2 * q, src + 4 * q, 2 * sizeof(uint32_t));
+      std::memcpy(bottom_row + 2 * q, src + 4 * q + 2, 2 * sizeof(uint32_t));
+    }
+  }
+}
+
+// Each quad's four codes: (R, G, B, A) of lane = table lookups of its bytes (sRGB or UNORM
+// colour table, UNORM alpha table).
+void LoadFullQuadCodesKernel(const uint32_t* plane, const uint32_t* pixel, int quad_count,
+                             int row_pixels, bool srgb, float* const channels[4]) {
+  const float* const unorm = unorm8_decode_table().data();
+  const float* const colour = srgb ? srgb8_decode_table().data() : unorm;
+  for (int q = 0; q < quad_count; ++q) {
+    const uint32_t* top = plane + pixel[q];
+    const uint32_t* bottom = top + row_pixels;
+    const size_t f = 4 * static_cast<size_t>(q);
+#if HWY_TARGET == HWY_SCALAR
+    const uint32_t quad[4] = {top[0], top[1], bottom[0], bottom[1]};
+    for (int lane = 0; lane < 4; ++lane) {
+      for (int c = 0; c < 4; ++c) {
+        channels[c][f + lane] = (c == 3 ? unorm : colour)[(quad[lane] >> (8 * c)) & 0xFFu];
+      }
+    }
+#else
+    const hn::Full128<float> df;
+    const hn::Full128<int32_t> di;
+    const hn::Full64<int32_t> dh;
+    const auto codes = hn::Combine(di, hn::LoadU(dh, reinterpret_cast<const int32_t*>(bottom)),
+                                   hn::LoadU(dh, reinterpret_cast<const int32_t*>(top)));
+    const auto byte = hn::Set(di, 0xFF);
+    hn::StoreU(hn::GatherIndex(df, colour, hn::And(codes, byte)), df, channels[0] + f);
+    hn::StoreU(hn::GatherIndex(df, colour, hn::And(hn::ShiftRight<8>(codes), byte)), df, channels[1] + f);
+    hn::StoreU(hn::GatherIndex(df, colour, hn::And(hn::ShiftRight<16>(codes), byte)), df, channels[2] + f);
+    hn::StoreU(hn::GatherIndex(df, unorm, hn::And(hn::ShiftRight<24>(codes), byte)), df, channels[3] + f);
+#endif
+  }
+}
+
 // Whole vectors of the value repeated (a vec4 per 128-bit block), four per iteration; copies
 // only, so every target writes the same bits.
 void FillPlaneKernel(glm::vec4* plane, size_t count, glm::vec4 value) {
@@ -132,6 +196,22 @@ void FillDepthKernel(float* depth, size_t count, float value) {
   for (; i < count; ++i) depth[i] = value;
 }
 
+void FillCodesKernel(uint32_t* plane, size_t count, uint32_t code) {
+  size_t i = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<uint32_t> d;
+  const size_t n = hn::Lanes(d);
+  const auto v = hn::Set(d, code);
+  for (; i + 4 * n <= count; i += 4 * n) {
+    hn::StoreU(v, d, plane + i);
+    hn::StoreU(v, d, plane + i + n);
+    hn::StoreU(v, d, plane + i + 2 * n);
+    hn::StoreU(v, d, plane + i + 3 * n);
+  }
+#endif
+  for (; i < count; ++i) plane[i] = code;
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile
 HWY_AFTER_NAMESPACE();
@@ -142,12 +222,46 @@ namespace ontile {
 HWY_EXPORT(StoreFullQuadsKernel);
 HWY_EXPORT(StoreQuadsKernel);
 HWY_EXPORT(LoadFullQuadsKernel);
+HWY_EXPORT(LoadFullQuadCodesKernel);
+HWY_EXPORT(StoreQuadRowsCodesKernel);
 HWY_EXPORT(FillPlaneKernel);
 HWY_EXPORT(FillDepthKernel);
+HWY_EXPORT(FillCodesKernel);
 
 void load_full_quads(const glm::vec4* plane, const uint32_t* pixel, int quad_count, int row_pixels,
                      float* const channels[4]) {
   HWY_DYNAMIC_DISPATCH(LoadFullQuadsKernel)(plane, pixel, quad_count, row_pixels, channels);
+}
+
+void load_full_quad_codes(const uint32_t* plane, const uint32_t* pixel, int quad_count,
+                          int row_pixels, bool srgb, float* const channels[4]) {
+  HWY_DYNAMIC_DISPATCH(LoadFullQuadCodesKernel)(plane, pixel, quad_count, row_pixels, srgb, channels);
+}
+
+void store_full_quad_codes(const uint32_t* codes, const int32_t* first_fragment,
+                           const uint32_t* pixel, int quad_count, int row_pixels, uint32_t* plane) {
+  for (int q = 0; q < quad_count; ++q) {
+    uint32_t* top = plane + pixel[q];
+    const uint32_t* src = codes + first_fragment[q];
+    std::memcpy(top, src, 2 * sizeof(uint32_t));
+    std::memcpy(top + row_pixels, src + 2, 2 * sizeof(uint32_t));
+  }
+}
+
+void store_quad_rows_codes(const uint32_t* codes, const int32_t* first, const int32_t* quads,
+                           const uint32_t* top, int segments, int row_pixels, uint32_t* plane) {
+  HWY_DYNAMIC_DISPATCH(StoreQuadRowsCodesKernel)(codes, first, quads, top, segments, row_pixels, plane);
+}
+
+void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,
+                      const uint8_t* lanes, int quad_count, int row_pixels, uint32_t* plane) {
+  for (int q = 0; q < quad_count; ++q) {
+    uint32_t* top = plane + pixel[q];
+    const uint32_t* src = codes + first_fragment[q];
+    for (int lane = 0; lane < 4; ++lane) {
+      if ((lanes[q] >> lane) & 1u) top[(lane >> 1) * static_cast<size_t>(row_pixels) + (lane & 1)] = src[lane];
+    }
+  }
 }
 
 void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value) {
@@ -155,6 +269,9 @@ void fill_plane(glm::vec4* plane, size_t count, glm::vec4 value) {
 }
 void fill_depth(float* depth, size_t count, float value) {
   HWY_DYNAMIC_DISPATCH(FillDepthKernel)(depth, count, value);
+}
+void fill_codes(uint32_t* plane, size_t count, uint32_t code) {
+  HWY_DYNAMIC_DISPATCH(FillCodesKernel)(plane, count, code);
 }
 
 void store_quads(const float* const channels[4], const int32_t* first_fragment, const uint32_t* pixel,

@@ -34,7 +34,7 @@ class TileFetch final : public FramebufferFetch {
     const int attachment = attachment_of(input_slot);
     const size_t i = memory_.index(x_px - rect_.x0, y_px - rect_.y0, sample);
     if (attachment == depth_index_) return {memory_.depth_plane()[i], 0.0f, 0.0f, 1.0f};
-    return memory_.color_plane(attachment)[i];
+    return memory_.color(attachment, i);
   }
   // The quads' two rows are adjacent pixels of tile memory: one index per quad; single-sample
   // colour planes through the SIMD transpose (quad_store_simd.h).
@@ -64,19 +64,24 @@ class TileFetch final : public FramebufferFetch {
       if (channel[3]) std::fill_n(channel[3], fragments, 1.0f);
       return;
     }
-    const glm::vec4* colour = memory_.color_plane(attachment);
+    const bool codes = memory_.holds_codes(attachment);
     if (memory_.samples() == 1) {
       uint32_t pixel[kBatchQuads];
       for (int q = 0; q < quad_count; ++q) {
         pixel[q] = static_cast<uint32_t>(memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, 0));
       }
-      load_full_quads(colour, pixel, quad_count, memory_.width(), channel);
+      if (codes) {
+        load_full_quad_codes(memory_.code_plane(attachment), pixel, quad_count, memory_.width(),
+                             memory_.format(attachment) == PixelFormat::RGBA8_SRGB, channel);
+      } else {
+        load_full_quads(memory_.color_plane(attachment), pixel, quad_count, memory_.width(), channel);
+      }
       return;
     }
     for (int q = 0; q < quad_count; ++q) {
       const size_t i = memory_.index(quad_x_px[q] - rect_.x0, quad_y_px[q] - rect_.y0, sample);
       for (int lane = 0; lane < kQuadLanes; ++lane) {
-        const glm::vec4& v = colour[i + offsets[lane]];
+        const glm::vec4 v = memory_.color(attachment, i + offsets[lane]);
         const int f = q * kQuadLanes + lane;
         for (int c = 0; c < 4; ++c) channel[c][f] = v[c];
       }

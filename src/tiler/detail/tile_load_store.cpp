@@ -1,7 +1,8 @@
 // Tile load and store (see tile_load_store.h). The memory model (memory/memory_model.h) prices
 // what moves; this file moves the data. A tile row (its pixels, samples adjacent) is contiguous in
 // tile memory and in the surface, so loads and stores convert whole rows (pixel_format.h row
-// functions, SIMD for the hot formats) and clears are fills of one quantised value.
+// functions, SIMD for the hot formats) or, for 8-bit RGBA code planes, copy them, and clears
+// are fills of one quantised value (or its code).
 #include "tiler/detail/tile_load_store.h"
 
 #include <algorithm>
@@ -19,9 +20,35 @@ constexpr int kMaxRowValues = 64 * 8;
 // per-pixel path.
 bool row_fits(const TileRect& rect, int samples) { return rect.width * samples <= kMaxRowValues; }
 
+// `rows` rows of `bytes` bytes, rows src_step and dst_step apart: the pointers stepped rather
+// than recomputed, and the common tile widths (16, 32 and 64 RGBA8 pixels) copied by
+// fixed-size copies the compiler inlines rather than a library call per row.
+template <size_t kBytes>
+void copy_fixed_rows(const uint8_t* src, size_t src_step, uint8_t* dst, size_t dst_step, int rows) {
+  for (int y = 0; y < rows; ++y, src += src_step, dst += dst_step) std::memcpy(dst, src, kBytes);
+}
+void copy_rows(const uint8_t* src, size_t src_step, uint8_t* dst, size_t dst_step, size_t bytes, int rows) {
+  switch (bytes) {
+    case 64: return copy_fixed_rows<64>(src, src_step, dst, dst_step, rows);
+    case 128: return copy_fixed_rows<128>(src, src_step, dst, dst_step, rows);
+    case 256: return copy_fixed_rows<256>(src, src_step, dst, dst_step, rows);
+    default:
+      for (int y = 0; y < rows; ++y, src += src_step, dst += dst_step) std::memcpy(dst, src, bytes);
+  }
+}
+
 void load_attachment_rows(const AttachmentDesc& desc, bool is_depth, const TileRect& rect,
-                          int samples, glm::vec4* color, float* depth, const TileMemory& memory) {
+                          int samples, glm::vec4* color, uint32_t* codes, float* depth,
+                          const TileMemory& memory) {
   const int n = rect.width * samples;
+  if (codes && rect.height > 0) {  // the surface's bytes are the plane's (the formats are equal: validated)
+    const uint8_t* first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
+    const size_t pitch = rect.height > 1
+        ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
+    copy_rows(first_row, pitch, reinterpret_cast<uint8_t*>(codes), sizeof(uint32_t) * memory.index(0, 1, 0),
+              sizeof(uint32_t) * static_cast<size_t>(n), rect.height);
+    return;
+  }
   glm::vec4 row[kMaxRowValues];
   for (int ly = 0; ly < rect.height; ++ly) {
     const size_t first = memory.index(0, ly, 0);
@@ -49,10 +76,17 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
   // Colour stores without a resolve: the whole tile in one call (rows of tile memory are
   // memory.width() * samples values apart, the surface's rows its row pitch).
   const bool whole_tile_store = store && !is_depth && !resolve && rect.height > 0;
+  const bool codes = !is_depth && memory.holds_codes(attachment);
   if (whole_tile_store) {
-    const uint8_t* first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
+    uint8_t* const first_row = desc.surface->pixel_bytes(rect.x0, rect.y0);
     const size_t pitch = rect.height > 1
         ? static_cast<size_t>(desc.surface->pixel_bytes(rect.x0, rect.y0 + 1) - first_row) : 0;
+    if (codes) {  // the plane's bytes are the surface's: row copies
+      copy_rows(reinterpret_cast<const uint8_t*>(memory.code_plane(attachment)),
+                sizeof(uint32_t) * memory.index(0, 1, 0), first_row, pitch,
+                sizeof(uint32_t) * static_cast<size_t>(n), rect.height);
+      return;
+    }
     encode_pixel_rows(desc.surface->format(), memory.color_plane(attachment), memory.index(0, 1, 0),
                       n, rect.height, desc.surface->pixel_bytes(rect.x0, rect.y0), pitch);
     return;
@@ -68,12 +102,18 @@ void store_attachment_rows(const AttachmentDesc& desc, bool is_depth, const Tile
   glm::vec4 resolved[kMaxRowValues];
   for (int ly = 0; ly < rect.height; ++ly) {
     const size_t first = memory.index(0, ly, 0);
-    const glm::vec4* values = memory.color_plane(attachment) + first;
+    const glm::vec4* values = codes ? row : memory.color_plane(attachment) + first;
     if (is_depth) {
       for (int i = 0; i < n; ++i) row[i] = glm::vec4(memory.depth_plane()[first + i], 0.0f, 0.0f, 1.0f);
       values = row;
     }
-    if (store) {
+    if (codes) {
+      const uint32_t* src = memory.code_plane(attachment) + first;
+      if (store) {
+        std::memcpy(desc.surface->pixel_bytes(rect.x0, rect.y0 + ly), src, sizeof(uint32_t) * static_cast<size_t>(n));
+      }
+      if (resolve) decode_pixels(memory.format(attachment), reinterpret_cast<const uint8_t*>(src), n, row);
+    } else if (store) {
       encode_pixels(desc.surface->format(), values, n,
                     desc.surface->pixel_bytes(rect.x0, rect.y0 + ly));
     }
@@ -95,7 +135,9 @@ void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& mem
   for (size_t a = 0; a < pass.attachments.size(); ++a) {
     const AttachmentDesc& desc = pass.attachments[a];
     const bool is_depth = static_cast<int>(a) == pass.depth_index;
-    glm::vec4* color = is_depth ? nullptr : memory.color_plane(static_cast<int>(a));
+    const bool codes = !is_depth && memory.holds_codes(static_cast<int>(a));
+    glm::vec4* color = is_depth || codes ? nullptr : memory.color_plane(static_cast<int>(a));
+    uint32_t* code_plane = codes ? memory.code_plane(static_cast<int>(a)) : nullptr;
     float* depth = memory.depth_plane();
     // DontCare leaves undefined contents; we define them as the clear value so that images
     // stay deterministic (a pipeline that reads them has a bug the validation cannot see).
@@ -105,13 +147,19 @@ void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& mem
       const size_t n = static_cast<size_t>(memory.width()) * memory.height() * samples;
       if (is_depth) {
         fill_depth(depth, n, v.x);
+      } else if (codes) {  // the clear value's code (whose decode is v)
+        uint8_t bytes[4];
+        encode_pixel(desc.format, desc.clear_value, bytes);
+        uint32_t code;
+        std::memcpy(&code, bytes, sizeof(code));
+        fill_codes(code_plane, n, code);
       } else {
         fill_plane(color, n, v);
       }
       continue;
     }
     if (desc.surface->samples() == samples && row_fits(rect, samples)) {
-      load_attachment_rows(desc, is_depth, rect, samples, color, depth, memory);
+      load_attachment_rows(desc, is_depth, rect, samples, color, code_plane, depth, memory);
       continue;
     }
     for (int ly = 0; ly < rect.height; ++ly) {
@@ -121,6 +169,8 @@ void load_tile(const RenderPassDesc& pass, const TileRect& rect, TileMemory& mem
           const glm::vec4 v = desc.surface->read(rect.x0 + lx, rect.y0 + ly, s);
           if (is_depth) {
             depth[i] = v.x;
+          } else if (codes) {
+            memory.set_color(static_cast<int>(a), i, v);
           } else {
             color[i] = v;
           }
@@ -140,7 +190,7 @@ void capture_tile(Surface& capture, bool is_depth, const TileRect& rect, const T
       for (int s = 0; s < memory.samples(); ++s) {
         const size_t i = memory.index(lx, ly, s);
         capture.write(rect.x0 + lx, rect.y0 + ly, s,
-                      is_depth ? glm::vec4(memory.depth_plane()[i], 0.0f, 0.0f, 1.0f) : memory.color_plane(a)[i]);
+                      is_depth ? glm::vec4(memory.depth_plane()[i], 0.0f, 0.0f, 1.0f) : memory.color(a, i));
       }
     }
   }
@@ -174,7 +224,7 @@ void store_tile(const RenderPassDesc& pass, const TileRect& rect, const TileMemo
         for (int s = 0; s < samples; ++s) {
           const size_t i = memory.index(lx, ly, s);
           const glm::vec4 v = is_depth ? glm::vec4(memory.depth_plane()[i], 0.0f, 0.0f, 1.0f)
-                                       : memory.color_plane(static_cast<int>(a))[i];
+                                       : memory.color(static_cast<int>(a), i);
           if (store) desc.surface->write(rect.x0 + lx, rect.y0 + ly, s, v);
           sum += v;
         }

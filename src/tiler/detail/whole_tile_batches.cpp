@@ -7,6 +7,7 @@
 #include <bit>
 #include <cstring>
 
+#include "raster/pixel_quantize_simd.h"
 #include "tiler/detail/quad_batcher.h"
 #include "tiler/detail/quad_store_simd.h"
 
@@ -62,6 +63,10 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   // The batch's quads row segment by row segment: within a quad row x, the tile pixel and the
   // offset in the cell advance by 2 per quad, and every 4 quads share a cell's planes.
   int x = qx, y = qy;
+  // The row segments: first batch quad, quads, tile pixel of the first quad's top left.
+  int32_t segment_first[kBatchQuads], segment_quads[kBatchQuads];
+  uint32_t segment_pixel[kBatchQuads];
+  int segments = 0;
   for (int i = 0; i < kBatchQuads;) {
     const int quads = std::min(kBatchQuads - i, (row_end - x) / 2);
     // x from the cells' left edge (at or left of the tile); the row's first cell; the quad row
@@ -70,18 +75,44 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
     const int cell_row = (y - first_cell_y) / kCellSizePx * cells_x;
     const int oy = (y - first_cell_y) % kCellSizePx;
     const uint32_t pixel = static_cast<uint32_t>((y - rect.y0) * width + (x - x0));
-    for (int k = 0; k < quads; ++k) {
-      b.quad_x_px[i + k] = x + 2 * k;
-      b.quad_y_px[i + k] = y;
-      quad_ox_[i + k] = static_cast<int32_t>((lx + 2u * k) % kCellSizePx);
-      quad_oy_[i + k] = oy;
-      full_pixel_[i + k] = pixel + 2u * k;
-    }
-    for (int k = 0; k < quads; ++k) {
-      const CellPlane* planes = cells[cell_row + (lx + 2u * k) / kCellSizePx].planes;
-      quad_l1_[i + k] = planes[0].origin;
-      quad_l2_[i + k] = planes[1].origin;
-      quad_z_[i + k] = planes[2].origin;
+    segment_first[segments] = i;
+    segment_quads[segments] = quads;
+    segment_pixel[segments++] = pixel;
+    // Cell by cell (lx is even: the rect's x0 is): its planes read once for its quads; a whole
+    // cell row (4 quads) as 4-value blocks built in registers.
+    for (int k = 0; k < quads;) {
+      const unsigned cell_lx = lx + 2u * static_cast<unsigned>(k);
+      const CellPlane* planes = cells[cell_row + cell_lx / kCellSizePx].planes;
+      const float l1 = planes[0].origin, l2 = planes[1].origin, z = planes[2].origin;
+      const int j = i + k;
+      if (cell_lx % kCellSizePx == 0 && k + 4 <= quads) {
+        const int32_t xs[4] = {x + 2 * k, x + 2 * k + 2, x + 2 * k + 4, x + 2 * k + 6};
+        const int32_t ys[4] = {y, y, y, y}, oxs[4] = {0, 2, 4, 6}, oys[4] = {oy, oy, oy, oy};
+        const uint32_t p = pixel + 2u * static_cast<uint32_t>(k);
+        const uint32_t pixels[4] = {p, p + 2, p + 4, p + 6};
+        const float l1s[4] = {l1, l1, l1, l1}, l2s[4] = {l2, l2, l2, l2}, zs[4] = {z, z, z, z};
+        std::memcpy(b.quad_x_px + j, xs, sizeof(xs));
+        std::memcpy(b.quad_y_px + j, ys, sizeof(ys));
+        std::memcpy(quad_ox_ + j, oxs, sizeof(oxs));
+        std::memcpy(quad_oy_ + j, oys, sizeof(oys));
+        std::memcpy(full_pixel_ + j, pixels, sizeof(pixels));
+        std::memcpy(quad_l1_ + j, l1s, sizeof(l1s));
+        std::memcpy(quad_l2_ + j, l2s, sizeof(l2s));
+        std::memcpy(quad_z_ + j, zs, sizeof(zs));
+        k += 4;
+        continue;
+      }
+      const int cell_end = std::min(quads, k + static_cast<int>((kCellSizePx - cell_lx % kCellSizePx) / 2));
+      for (; k < cell_end; ++k) {
+        b.quad_x_px[i + k] = x + 2 * k;
+        b.quad_y_px[i + k] = y;
+        quad_ox_[i + k] = static_cast<int32_t>((lx + 2u * k) % kCellSizePx);
+        quad_oy_[i + k] = oy;
+        full_pixel_[i + k] = pixel + 2u * k;
+        quad_l1_[i + k] = l1;
+        quad_l2_[i + k] = l2;
+        quad_z_[i + k] = z;
+      }
     }
     i += quads;
     x += 2 * quads;
@@ -119,6 +150,20 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   for (int k = 0; k < b.color_output_count; ++k) {
     const PixelFormat format = ctx.pass.attachments[outputs[k]].format;
+    if (TileMemory::holds_codes(format)) {  // decoded codes give their own codes back
+      const bool srgb = format == PixelFormat::RGBA8_SRGB;
+      if ((out.uniform_outputs >> k) & 1u) {
+        quantize_rgba8_codes_simd(out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3], 1,
+                                  srgb, codes_[0][k]);
+        std::fill_n(codes_[0][k] + 1, kBatchFragments - 1, codes_[0][k][0]);
+        continue;
+      }
+      const auto codes_of = k == 0 && out.output0_codes_of == format ? rgba8_codes_of_decoded_simd
+                                                                     : quantize_rgba8_codes_simd;
+      codes_of(out.color[k][0], out.color[k][1], out.color[k][2], out.color[k][3], kBatchFragments,
+               srgb, codes_[0][k]);
+      continue;
+    }
     if (k == 0 && out.output0_codes_of == format) continue;  // already quantised
     if ((out.uniform_outputs >> k) & 1u) {
       // Quantising is per value: one pixel's result is every pixel's.
@@ -151,6 +196,10 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
         const size_t p = full_pixel_[i] + static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1);
         const int f = i * kQuadLanes + lane;
         for (size_t k = 0; k < outputs.size(); ++k) {
+          if (memory_->holds_codes(outputs[k])) {
+            memory_->code_plane(outputs[k])[p] = codes_[0][k][f];
+            continue;
+          }
           memory_->color_plane(outputs[k])[p] = {out.color[k][0][f], out.color[k][1][f],
                                                  out.color[k][2][f], out.color[k][3][f]};
         }
@@ -158,6 +207,16 @@ void QuadBatcher::shade_whole_batch(const TileRect& rect, int& qx, int& qy, int 
     }
   }
   for (size_t k = 0; k < outputs.size(); ++k) {
+    if (memory_->holds_codes(outputs[k])) {
+      uint32_t* const plane = memory_->code_plane(outputs[k]);
+      if (full_quads < kBatchQuads) {
+        store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, width, plane);
+        continue;
+      }
+      store_quad_rows_codes(codes_[0][k], segment_first, segment_quads, segment_pixel, segments, width,
+                            plane);  // every quad: row segment by row segment
+      continue;
+    }
     const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
                                       out.color[k][3]};
     store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(),
