@@ -9,6 +9,8 @@
 #include "raster/texture_quad_footprint-inl.h"
 #include "raster/texture_quad_trace-inl.h"
 #include "raster/texture_quad_filter-inl.h"
+#include "raster/texture_quad_fast-inl.h"
+#include "raster/texture_quad_lod-inl.h"
 
 #include "raster/log2_exact.h"
 #include "raster/texture_quad_simd.h"
@@ -109,6 +111,8 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
   // facts[r]: of read r's levels facts_level[r] and the one after it (when there is one).
   LevelFacts facts[QuadBatch8::kMaxReads];
   const Texture2D::Level* facts_level[QuadBatch8::kMaxReads];
+  // fast[r]: read r's level pair of its last trilinear job, prepared for sample_trilinear_fast.
+  FastLevelPair fast[QuadBatch8::kMaxReads];
   for (int r = 0; r < batch.read_count; ++r) {
     const BatchRead8& read = batch.reads[r];
     facts_level[r] = nullptr;
@@ -173,6 +177,14 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
         hn::Store(hn::IfThenElse(hn::Lt(rho_x, rho_y), rho_y, rho_x), d, rho[r] + i);
       }
     }
+    // lambda[r][j] = log2_exact(rho) + lod_bias on lanes, or per quad where a lane's rho is not a
+    // normal positive float (lambda_on_lanes[r] false). Quads past the batch's end take rho 1.
+    alignas(16) float lambda_block[QuadBatch8::kMaxReads][kBlockQuads];
+    bool lambda_on_lanes[QuadBatch8::kMaxReads];
+    for (int r = 0; r < batch.read_count; ++r) {
+      for (int j = quads; j < kBlockQuads; ++j) rho[r][j] = 1.0f;
+      lambda_on_lanes[r] = log2_exact_lanes(rho[r], batch.reads[r].lod_bias, lambda_block[r]);
+    }
     for (int j = 0; j < quads; ++j, first_read = 0) {
       const int q = block + j;
       const int f0 = q * kLanes;
@@ -189,7 +201,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       for (int r = first_read; r < batch.read_count; ++r) {
         const BatchRead8& read = batch.reads[r];
         QuadSample8& job = jobs[r];
-        float lambda = log2_exact(rho[r][j]) + read.lod_bias;
+        float lambda = lambda_on_lanes[r] ? lambda_block[r][j] : log2_exact(rho[r][j]) + read.lod_bias;
         // linear8_job's level selection.
         job.level_count = 1;
         job.blend = 0.0f;
@@ -210,12 +222,23 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
             job.blend = blend;
           }
         }
+        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
+        if (job.level_count == 2) {
+          FastLevelPair& pair = fast[r];
+          if (pair.first != job.levels[0]) {
+            const int level = static_cast<int>(job.levels[0] - read.levels);
+            pair.prepare(job.levels[0], static_cast<int>(read.max_level) - level, read.wrap_u, read.wrap_v);
+          }
+          if (pair.usable) {
+            if (!sample_trilinear_fast(pair, job, u, v, out, &staging)) return finish(q * batch.read_count + r);
+            continue;
+          }
+        }
         if (job.levels[0] != facts_level[r]) {
           facts_level[r] = job.levels[0];
           const int level = static_cast<int>(job.levels[0] - read.levels);
           facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
         }
-        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
       if constexpr (kAfterQuad) {  // the shader's own reads of the quad, staged in order

@@ -1,0 +1,177 @@
+// The common case of the SIMD quad sampler (texture_quad_simd.cpp): a trilinear RGBA8/sRGB8 read
+// with repeat wrap on power-of-two levels. What the general path finds per quad (level facts,
+// sizes, wraps, texel addresses) is found once per read and level pair, the texels of both levels
+// are gathered on 8 lanes at once, and the trace's granules come from 32-bit texel indices.
+// Compiled once per SIMD target: foreach_target re-includes this file from texture_quad_simd.cpp,
+// hence the toggling guard instead of #pragma once.
+#if defined(ONTILE_RASTER_TEXTURE_QUAD_FAST_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef ONTILE_RASTER_TEXTURE_QUAD_FAST_INL_H_
+#undef ONTILE_RASTER_TEXTURE_QUAD_FAST_INL_H_
+#else
+#define ONTILE_RASTER_TEXTURE_QUAD_FAST_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include "raster/texture_quad_filter-inl.h"
+#include "raster/texture_quad_footprint-inl.h"
+#include "raster/texture_quad_trace-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace ontile {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// A read's level pair (d, d + 1) prepared for sample_trilinear_fast, per (level, lane) pair:
+// level d in pairs 0-3, level d + 1 in pairs 4-7.
+struct FastLevelPair {
+  const Texture2D::Level* first = nullptr;  // level d; null: nothing prepared yet
+  bool usable = false;  // every condition of the fast path holds (see prepare)
+  alignas(32) float width_f[kPairs], height_f[kPairs];
+  alignas(32) int32_t width_mask[kPairs], height_mask[kPairs], width[kPairs];
+  // Texel t of pair p's level is words[t + word_offset[p]]: level d + 1's texels addressed
+  // from level d's, so one 8-lane gather serves both levels.
+  alignas(32) int32_t word_offset[kPairs];
+  const int32_t* words = nullptr;
+  uint64_t granule_base[2] = {0, 0};  // address / 64 of each level's texel 0
+
+  // Level `first` and the one after it, for reads with repeat wrap on both axes. Usable when
+  // both levels are uncompressed 4-byte texels of power-of-two sizes under 2^31 texels, start
+  // on a 64-byte granule (so texel t's granule is base + t / 16, and no granule holds texels
+  // of both levels), and level d + 1's texels are 4-byte words within int32 reach of level d's.
+  void prepare(const Texture2D::Level* level, int levels_after, WrapMode wrap_u, WrapMode wrap_v) {
+    first = level;
+    usable = false;
+    if (levels_after < 1 || wrap_u != WrapMode::Repeat || wrap_v != WrapMode::Repeat) return;
+    const Texture2D::Level* pair[2] = {level, level + 1};
+    for (const Texture2D::Level* l : pair) {
+      const uint64_t texels = static_cast<uint64_t>(l->width) * static_cast<uint64_t>(l->height);
+      if (l->memory_bytes_per_texel != 4 || l->block_bytes != 0 || texels >= (uint64_t{1} << 31) ||
+          (l->width & (l->width - 1)) != 0 || (l->height & (l->height - 1)) != 0 || l->address % 64 != 0 ||
+          reinterpret_cast<uintptr_t>(l->bytes8()) % alignof(int32_t) != 0) {
+        return;
+      }
+    }
+    const intptr_t offset_bytes = reinterpret_cast<intptr_t>(pair[1]->bytes8()) - reinterpret_cast<intptr_t>(pair[0]->bytes8());
+    const int64_t offset_words = offset_bytes / 4;
+    const int64_t texels1 = static_cast<int64_t>(pair[1]->width) * pair[1]->height;
+    if (offset_bytes % 4 != 0 || offset_words < std::numeric_limits<int32_t>::min() ||
+        offset_words + texels1 > std::numeric_limits<int32_t>::max()) {
+      return;
+    }
+    for (int p = 0; p < kPairs; ++p) {
+      const Texture2D::Level& l = *pair[p / kLanes];
+      width_f[p] = static_cast<float>(l.width);
+      height_f[p] = static_cast<float>(l.height);
+      width_mask[p] = l.width - 1;
+      height_mask[p] = l.height - 1;
+      width[p] = l.width;
+      word_offset[p] = p < kLanes ? 0 : static_cast<int32_t>(offset_words);
+    }
+    words = reinterpret_cast<const int32_t*>(pair[0]->bytes8());
+    granule_base[0] = pair[0]->address / 64;
+    granule_base[1] = pair[1]->address / 64;
+    usable = true;
+  }
+};
+
+// Appends a trilinear quad's granules when every footprint is regular: per level, each row's
+// two texels share a granule and the two rows do not. Levels share no granule (prepare), so
+// nothing merges across footprints, and the trace takes t00, t01 of level d, then of level
+// d + 1, lane by lane: texture_quad_trace-inl.h's regular case. top, bottom: per pair, the
+// granule of t00 and of t01 relative to the pair's level base.
+HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t top[kPairs],
+                                        const int32_t bottom[kPairs], std::vector<uint64_t>& trace,
+                                        TraceStaging& staging) {
+  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
+  const uint64_t first = pair.granule_base[0] + static_cast<uint32_t>(top[0]);
+  const int kept_first = first != staging.last;
+  // The first granule is written at the slot before the new ones (the last staged granule, or
+  // the spare slot, holding that same value when it merges).
+  uint64_t* const sequence = staging.granules + staging.count + kept_first;
+  const hn::CappedTag<uint64_t, kLanes> d64;
+  const hn::Rebind<int64_t, decltype(d64)> ds64;
+  const hn::Rebind<int32_t, decltype(d64)> d32;
+  const auto base0 = hn::Set(d64, pair.granule_base[0]), base1 = hn::Set(d64, pair.granule_base[1]);
+  const auto granule = [&](const int32_t* relative, hn::Vec<decltype(d64)> base) {
+    return hn::Add(base, hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, relative))));
+  };
+  for (size_t i = 0; i < static_cast<size_t>(kLanes); i += hn::Lanes(d64)) {
+    hn::StoreInterleaved4(granule(top + i, base0), granule(bottom + i, base0), granule(top + kLanes + i, base1),
+                          granule(bottom + kLanes + i, base1), d64, sequence + 4 * i);
+  }
+  constexpr int kCount = 4 * kLanes;
+  staging.count += kept_first + kCount - 1;
+  staging.last = sequence[kCount - 1];
+}
+
+// One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
+// False, touching nothing the caller keeps, when |u|, |v| or a texel coordinate reaches 2^24
+// (the general path's limit, checked the same way). `in`: the job (blend, decode tables, trace;
+// its levels are pair's). u, v: the 4 lanes' coordinates, twice (pairs).
+HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSample8& in, const float* u,
+                                      const float* v, float* const out[4], TraceStaging* staging) {
+  const hn::CappedTag<float, kPairs> d;
+  const hn::RebindToSigned<decltype(d)> di;
+  const size_t n = hn::Lanes(d);
+  const auto limit = hn::Set(d, kMaxExactTexelCoord);
+  const auto half = hn::Set(d, 0.5f);
+  const auto one = hn::Set(di, 1);
+  alignas(32) float a[kPairs], b[kPairs];
+  alignas(32) int32_t taps[4][kPairs];    // [tap][pair] texel index in the pair's level
+  alignas(32) int32_t packed[4][kPairs];  // [tap][pair] RGBA8 texel
+  alignas(32) int32_t top[kPairs], bottom[kPairs];
+  bool regular = true;
+  for (size_t i = 0; i < static_cast<size_t>(kPairs); i += n) {
+    // footprints' operations (OpenGL 4.6 eq. 8.10), with wrap_axis' repeat on power-of-two sizes.
+    const auto uu = hn::LoadU(d, u + i), vv = hn::LoadU(d, v + i);
+    const auto x = hn::Sub(hn::Mul(uu, hn::Load(d, pair.width_f + i)), half);
+    const auto y = hn::Sub(hn::Mul(vv, hn::Load(d, pair.height_f + i)), half);
+    const auto exact = hn::And(hn::And(hn::Lt(hn::Abs(uu), limit), hn::Lt(hn::Abs(x), limit)),
+                               hn::And(hn::Lt(hn::Abs(vv), limit), hn::Lt(hn::Abs(y), limit)));
+    if (!hn::AllTrue(d, exact)) return false;
+    const auto x_floor = hn::Floor(x), y_floor = hn::Floor(y);
+    hn::Store(hn::Sub(x, x_floor), d, a + i);
+    hn::Store(hn::Sub(y, y_floor), d, b + i);
+    const auto x0 = hn::ConvertTo(di, x_floor), y0 = hn::ConvertTo(di, y_floor);
+    const auto width_mask = hn::Load(di, pair.width_mask + i), height_mask = hn::Load(di, pair.height_mask + i);
+    const auto row = hn::Load(di, pair.width + i);
+    const auto xa = hn::And(x0, width_mask), xb = hn::And(hn::Add(x0, one), width_mask);
+    const auto row_a = hn::Mul(hn::And(y0, height_mask), row);
+    const auto row_b = hn::Mul(hn::And(hn::Add(y0, one), height_mask), row);
+    const hn::Vec<decltype(di)> tap[4] = {hn::Add(row_a, xa), hn::Add(row_a, xb), hn::Add(row_b, xa),
+                                          hn::Add(row_b, xb)};
+    const auto word_offset = hn::Load(di, pair.word_offset + i);
+    for (int t = 0; t < 4; ++t) {
+      hn::Store(tap[t], di, taps[t] + i);
+      hn::Store(hn::GatherIndex(di, pair.words, hn::Add(tap[t], word_offset)), di, packed[t] + i);
+    }
+    if (in.trace) {
+      // 16 texels to a granule: texel indices are non-negative, so the shift divides.
+      const auto g00 = hn::ShiftRight<4>(tap[0]), g10 = hn::ShiftRight<4>(tap[1]);
+      const auto g01 = hn::ShiftRight<4>(tap[2]), g11 = hn::ShiftRight<4>(tap[3]);
+      regular &= hn::AllTrue(di, hn::AndNot(hn::Eq(g00, g01), hn::And(hn::Eq(g00, g10), hn::Eq(g01, g11))));
+      hn::Store(g00, di, top + i);
+      hn::Store(g01, di, bottom + i);
+    }
+  }
+  if (in.trace) {
+    if (regular && in.trace_repeats == 1) {
+      stage_regular_trilinear(pair, top, bottom, *in.trace, *staging);
+    } else {
+      record_trace<2>(in, true, taps, staging);
+    }
+  }
+  filter_quad<2>(d, in, kPairs, packed, a, b, out);
+  return true;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ontile
+HWY_AFTER_NAMESPACE();
+
+#endif  // ONTILE_RASTER_TEXTURE_QUAD_FAST_INL_H_
