@@ -109,6 +109,30 @@ HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t
   staging.last = sequence[kCount - 1];
 }
 
+// Appends a trilinear quad's granules, footprints in any shape: the scalar sampler's order (lane
+// by lane, level d then d + 1, taps t00, t10, t01, t11), repeats of the previous granule removed.
+// relative[t][pair]: tap t's granule relative to the pair's level base.
+HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relative[4][kPairs],
+                                std::vector<uint64_t>& trace, TraceStaging& staging) {
+  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
+  uint64_t* const out = staging.granules + 1 + staging.count;
+  uint64_t last = staging.last;
+  int count = 0;
+  for (int lane = 0; lane < kLanes; ++lane) {
+    for (int level = 0; level < 2; ++level) {
+      const uint64_t base = pair.granule_base[level];
+      for (int t = 0; t < 4; ++t) {
+        const uint64_t granule = base + static_cast<uint32_t>(relative[t][level * kLanes + lane]);
+        out[count] = granule;
+        count += granule != last;
+        last = granule;
+      }
+    }
+  }
+  staging.count += count;
+  staging.last = last;
+}
+
 // One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
 // False, touching nothing the caller keeps, when |u|, |v| or a texel coordinate reaches 2^24
 // (the general path's limit, checked the same way). `in`: the job (blend, decode tables, trace;
@@ -124,7 +148,7 @@ HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSampl
   alignas(32) float a[kPairs], b[kPairs];
   alignas(32) int32_t taps[4][kPairs];    // [tap][pair] texel index in the pair's level
   alignas(32) int32_t packed[4][kPairs];  // [tap][pair] RGBA8 texel
-  alignas(32) int32_t top[kPairs], bottom[kPairs];
+  alignas(32) int32_t relative[4][kPairs];  // [tap][pair] granule relative to the level's base
   bool regular = true;
   for (size_t i = 0; i < static_cast<size_t>(kPairs); i += n) {
     // footprints' operations (OpenGL 4.6 eq. 8.10), with wrap_axis' repeat on power-of-two sizes.
@@ -155,13 +179,19 @@ HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSampl
       const auto g00 = hn::ShiftRight<4>(tap[0]), g10 = hn::ShiftRight<4>(tap[1]);
       const auto g01 = hn::ShiftRight<4>(tap[2]), g11 = hn::ShiftRight<4>(tap[3]);
       regular &= hn::AllTrue(di, hn::AndNot(hn::Eq(g00, g01), hn::And(hn::Eq(g00, g10), hn::Eq(g01, g11))));
-      hn::Store(g00, di, top + i);
-      hn::Store(g01, di, bottom + i);
+      hn::Store(g00, di, relative[0] + i);
+      hn::Store(g10, di, relative[1] + i);
+      hn::Store(g01, di, relative[2] + i);
+      hn::Store(g11, di, relative[3] + i);
     }
   }
   if (in.trace) {
-    if (regular && in.trace_repeats == 1) {
-      stage_regular_trilinear(pair, top, bottom, *in.trace, *staging);
+    if (in.trace_repeats == 1) {
+      if (regular) {
+        stage_regular_trilinear(pair, relative[0], relative[2], *in.trace, *staging);
+      } else {
+        stage_trilinear(pair, relative, *in.trace, *staging);
+      }
     } else {
       record_trace<2>(in, true, taps, staging);
     }

@@ -178,12 +178,30 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       }
     }
     // lambda[r][j] = log2_exact(rho) + lod_bias on lanes, or per quad where a lane's rho is not a
-    // normal positive float (lambda_on_lanes[r] false). Quads past the batch's end take rho 1.
+    // normal positive float. Quads past the batch's end take rho 1. Then linear8_job's level
+    // selection on lanes for Linear and None mipmaps: level d and the weight of level d + 1
+    // (0: level d alone); Nearest selects per quad below.
     alignas(16) float lambda_block[QuadBatch8::kMaxReads][kBlockQuads];
-    bool lambda_on_lanes[QuadBatch8::kMaxReads];
+    alignas(16) int32_t level_block[QuadBatch8::kMaxReads][kBlockQuads];
+    alignas(16) float blend_block[QuadBatch8::kMaxReads][kBlockQuads];
     for (int r = 0; r < batch.read_count; ++r) {
+      const BatchRead8& read = batch.reads[r];
       for (int j = quads; j < kBlockQuads; ++j) rho[r][j] = 1.0f;
-      lambda_on_lanes[r] = log2_exact_lanes(rho[r], batch.reads[r].lod_bias, lambda_block[r]);
+      if (!log2_exact_lanes(rho[r], read.lod_bias, lambda_block[r])) {
+        for (int j = 0; j < kBlockQuads; ++j) lambda_block[r][j] = log2_exact(rho[r][j]) + read.lod_bias;
+      }
+      if (read.mipmap_mode == MipmapMode::Nearest) continue;
+      const hn::RebindToSigned<decltype(d)> di;
+      for (size_t i = 0; i < static_cast<size_t>(kBlockQuads); i += hn::Lanes(d)) {
+        const auto lambda = hn::Load(d, lambda_block[r] + i);
+        // std::min(lambda, max_level) is lambda unless max_level < lambda; NaN is not > 0.
+        const auto mipmapped = read.mipmap_mode == MipmapMode::Linear ? hn::Gt(lambda, hn::Zero(d)) : hn::FirstN(d, 0);
+        const auto max_level = hn::Set(d, read.max_level);
+        const auto clamped = hn::IfThenElse(hn::Lt(max_level, lambda), max_level, lambda);
+        const auto level = hn::Floor(clamped);
+        hn::Store(hn::IfThenElseZero(hn::RebindMask(di, mipmapped), hn::ConvertTo(di, level)), di, level_block[r] + i);
+        hn::Store(hn::IfThenElseZero(mipmapped, hn::Sub(clamped, level)), d, blend_block[r] + i);
+      }
     }
     for (int j = 0; j < quads; ++j, first_read = 0) {
       const int q = block + j;
@@ -201,25 +219,28 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       for (int r = first_read; r < batch.read_count; ++r) {
         const BatchRead8& read = batch.reads[r];
         QuadSample8& job = jobs[r];
-        float lambda = lambda_on_lanes[r] ? lambda_block[r][j] : log2_exact(rho[r][j]) + read.lod_bias;
-        // linear8_job's level selection.
-        job.level_count = 1;
-        job.blend = 0.0f;
-        const bool base_only = !(lambda > 0.0f) || read.mipmap_mode == MipmapMode::None;
-        if (!base_only) lambda = std::min(lambda, read.max_level);
-        if (base_only) {
-          job.levels[0] = &read.levels[0];
-        } else if (read.mipmap_mode == MipmapMode::Nearest) {
-          const int single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
-          job.levels[0] = &read.levels[single_level];
-        } else {
-          const float d1_float = std::floor(lambda);
-          const float blend = lambda - d1_float;
-          job.levels[0] = &read.levels[static_cast<int>(d1_float)];
+        if (read.mipmap_mode != MipmapMode::Nearest) {
+          const int level = level_block[r][j];
+          const float blend = blend_block[r][j];
+          job.levels[0] = &read.levels[level];
+          job.level_count = 1;
+          job.blend = 0.0f;
           if (blend != 0.0f) {
-            job.levels[1] = &read.levels[static_cast<int>(d1_float) + 1];
+            job.levels[1] = &read.levels[level + 1];
             job.level_count = 2;
             job.blend = blend;
+          }
+        } else {
+          // linear8_job's level selection for Nearest mipmaps.
+          float lambda = lambda_block[r][j];
+          job.level_count = 1;
+          job.blend = 0.0f;
+          if (lambda > 0.0f) {
+            lambda = std::min(lambda, read.max_level);
+            const int single_level = lambda <= 0.5f ? 0 : static_cast<int>(std::ceil(lambda + 0.5f)) - 1;
+            job.levels[0] = &read.levels[single_level];
+          } else {
+            job.levels[0] = &read.levels[0];
           }
         }
         float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
