@@ -109,28 +109,91 @@ HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t
   staging.last = sequence[kCount - 1];
 }
 
-// Appends a trilinear quad's granules, footprints in any shape: the scalar sampler's order (lane
-// by lane, level d then d + 1, taps t00, t10, t01, t11), repeats of the previous granule removed.
-// relative[t][pair]: tap t's granule relative to the pair's level base.
-HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relative[4][kPairs],
-                                std::vector<uint64_t>& trace, TraceStaging& staging) {
-  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
-  uint64_t* const out = staging.granules + 1 + staging.count;
-  uint64_t last = staging.last;
-  int count = 0;
-  for (int lane = 0; lane < kLanes; ++lane) {
-    for (int level = 0; level < 2; ++level) {
-      const uint64_t base = pair.granule_base[level];
-      for (int t = 0; t < 4; ++t) {
-        const uint64_t granule = base + static_cast<uint32_t>(relative[t][level * kLanes + lane]);
-        out[count] = granule;
-        count += granule != last;
-        last = granule;
+// Per footprint shape, how its 4 granules compact: shape bit k - 1 set when tap k's granule
+// repeats tap k - 1's (taps t00, t10, t01, t11), kCompactWords[shape] the 32-bit lane indices
+// that move the kept 64-bit granules to the front, kKept[shape] how many there are.
+struct FootprintCompaction {
+  int32_t words[8][8];
+  int kept[8];
+  constexpr FootprintCompaction() : words{}, kept{} {
+    for (int shape = 0; shape < 8; ++shape) {
+      int count = 0;
+      for (int tap = 0; tap < 4; ++tap) {
+        if (tap > 0 && (shape >> (tap - 1)) & 1) continue;
+        words[shape][2 * count] = 2 * tap;
+        words[shape][2 * count + 1] = 2 * tap + 1;
+        ++count;
+      }
+      kept[shape] = count;
+      for (int lane = count; lane < 4; ++lane) {  // anything: overwritten or past the end
+        words[shape][2 * lane] = 6;
+        words[shape][2 * lane + 1] = 7;
       }
     }
   }
-  staging.count += count;
-  staging.last = last;
+};
+inline constexpr FootprintCompaction kFootprintCompaction{};
+
+// Appends a trilinear quad's granules, footprints in any shape: the scalar sampler's order (lane
+// by lane, level d then d + 1, taps t00, t10, t01, t11), repeats of the previous granule removed.
+// Levels share no granule (prepare), so only taps of one footprint repeat each other, and the
+// quad's first granule the trace's last. relative[t][pair]: tap t's granule relative to the
+// pair's level base.
+HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relative[4][kPairs],
+                                std::vector<uint64_t>& trace, TraceStaging& staging) {
+  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
+  const uint64_t first = pair.granule_base[0] + static_cast<uint32_t>(relative[0][0]);
+  const int kept_first = first != staging.last;
+  // As stage_regular_trilinear: the first granule goes to the slot before the new ones.
+  uint64_t* const sequence = staging.granules + staging.count + kept_first;
+  int count = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::CappedTag<uint64_t, kLanes> d64;
+  if constexpr (hn::MaxLanes(d64) == static_cast<size_t>(kLanes) &&
+                hn::MaxLanes(hn::CappedTag<int32_t, kPairs>()) == static_cast<size_t>(kPairs)) {
+    // A footprint's 4 granules on one vector: the kept ones moved to the front and stored whole,
+    // the next footprint's store overwriting the rest (kMaxPerQuad leaves room for them).
+    const hn::CappedTag<int32_t, kPairs> di;
+    const hn::Repartition<uint32_t, decltype(d64)> du32;
+    const hn::Rebind<int32_t, decltype(d64)> d32;
+    const hn::Rebind<int64_t, decltype(d64)> ds64;
+    const auto g00 = hn::Load(di, relative[0]), g10 = hn::Load(di, relative[1]);
+    const auto g01 = hn::Load(di, relative[2]), g11 = hn::Load(di, relative[3]);
+    alignas(32) int32_t shape[kPairs];
+    alignas(32) int32_t footprint[kPairs][4];  // [pair][tap]
+    hn::Store(hn::Or(hn::IfThenElseZero(hn::Eq(g10, g00), hn::Set(di, 1)),
+                     hn::Or(hn::IfThenElseZero(hn::Eq(g01, g10), hn::Set(di, 2)),
+                            hn::IfThenElseZero(hn::Eq(g11, g01), hn::Set(di, 4)))),
+              di, shape);
+    hn::StoreInterleaved4(g00, g10, g01, g11, di, &footprint[0][0]);
+    const hn::Vec<decltype(d64)> base[2] = {hn::Set(d64, pair.granule_base[0]), hn::Set(d64, pair.granule_base[1])};
+    for (int lane = 0; lane < kLanes; ++lane) {
+      for (int level = 0; level < 2; ++level) {
+        const int p = level * kLanes + lane;
+        const auto granules = hn::Add(base[level], hn::BitCast(d64, hn::PromoteTo(ds64, hn::Load(d32, footprint[p]))));
+        const auto compact = hn::SetTableIndices(du32, kFootprintCompaction.words[shape[p]]);
+        hn::StoreU(hn::BitCast(d64, hn::TableLookupLanes(hn::BitCast(du32, granules), compact)), d64, sequence + count);
+        count += kFootprintCompaction.kept[shape[p]];
+      }
+    }
+  } else
+#endif
+  {
+    uint64_t last = first;
+    for (int lane = 0; lane < kLanes; ++lane) {
+      for (int level = 0; level < 2; ++level) {
+        const uint64_t base = pair.granule_base[level];
+        for (int t = 0; t < 4; ++t) {
+          const uint64_t granule = base + static_cast<uint32_t>(relative[t][level * kLanes + lane]);
+          sequence[count] = granule;
+          count += granule != last || count == 0;
+          last = granule;
+        }
+      }
+    }
+  }
+  staging.count += kept_first + count - 1;
+  staging.last = sequence[count - 1];
 }
 
 // One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
