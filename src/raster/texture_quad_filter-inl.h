@@ -30,8 +30,21 @@ HWY_INLINE hn::Vec<D> filter_channel(D d, const float* table, const hn::Vec<hn::
   const hn::RebindToUnsigned<D> du;
   hn::Vec<D> tap[4];
   for (int t = 0; t < 4; ++t) {
-    auto index = hn::ShiftRight<kShift>(p[t]);  // unsigned: the top byte needs no mask
-    if (kShift < 24) index = hn::And(index, hn::Set(du, 0xFFu));
+    hn::Vec<decltype(du)> index;
+    if constexpr (kShift == 0) {
+      index = hn::And(p[t], hn::Set(du, 0xFFu));
+    } else if constexpr (kShift == 24) {
+      index = hn::ShiftRight<24>(p[t]);  // unsigned: the top byte needs no mask
+    } else {
+#if HWY_TARGET == HWY_SCALAR
+      index = hn::And(hn::ShiftRight<kShift>(p[t]), hn::Set(du, 0xFFu));
+#else
+      // The middle bytes in one byte shuffle: each lane takes its own byte kShift / 8 and three
+      // zeros (an index with the top bit set), indices counted from the lane's 128-bit block.
+      const auto own_byte = hn::ShiftLeft<2>(hn::And(hn::Iota(du, 0), hn::Set(du, 3u)));
+      index = hn::TableLookupBytesOr0(p[t], hn::Or(own_byte, hn::Set(du, 0x80808000u | (kShift / 8))));
+#endif
+    }
     tap[t] = hn::GatherIndex(d, table, hn::BitCast(hn::RebindToSigned<D>(), index));
   }
   const auto top = hn::Add(hn::Mul(tap[0], one_a), hn::Mul(tap[1], a));

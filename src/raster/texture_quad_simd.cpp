@@ -136,7 +136,6 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
   };
   const int first_quad = first / batch.read_count;
   int first_read = first - first_quad * batch.read_count;
-  const auto inf = hn::Set(d, std::numeric_limits<float>::infinity());
   // Quads a block of 4 at a time: the block's coordinates made finite (finite_or_zero on lanes:
   // |x| < inf is false for NaN and infinities), then quad_lambda's rho = max(|d(uv)/dx|,
   // |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7) for each read, one quad per lane: the
@@ -144,7 +143,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
   constexpr int kBlockQuads = kLanes;
   for (int block = first_quad; block < batch.quad_count; block += kBlockQuads) {
     const int quads = std::min(kBlockQuads, batch.quad_count - block);
-    alignas(32) float block_u[kBlockQuads * kLanes], block_v[kBlockQuads * kLanes];  // [quad][lane]
+    alignas(64) float block_u[kBlockQuads * kLanes], block_v[kBlockQuads * kLanes];  // [quad][lane]
     const float* raw_u = batch.u + block * kLanes;
     const float* raw_v = batch.v + block * kLanes;
     if (quads < kBlockQuads) {  // the last block: zeros after the batch's quads
@@ -155,10 +154,12 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       raw_u = block_u;
       raw_v = block_v;
     }
-    for (size_t i = 0; i < static_cast<size_t>(kBlockQuads * kLanes); i += hn::Lanes(d)) {
-      const auto uu = hn::LoadU(d, raw_u + i), vv = hn::LoadU(d, raw_v + i);
-      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(uu), inf), uu), d, block_u + i);
-      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(vv), inf), vv), d, block_v + i);
+    const hn::CappedTag<float, kBlockQuads * kLanes> d_block;
+    for (size_t i = 0; i < static_cast<size_t>(kBlockQuads * kLanes); i += hn::Lanes(d_block)) {
+      const auto uu = hn::LoadU(d_block, raw_u + i), vv = hn::LoadU(d_block, raw_v + i);
+      const auto inf = hn::Set(d_block, std::numeric_limits<float>::infinity());
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(uu), inf), uu), d_block, block_u + i);
+      hn::Store(hn::IfThenElseZero(hn::Lt(hn::Abs(vv), inf), vv), d_block, block_v + i);
     }
     alignas(16) float rho[QuadBatch8::kMaxReads][kBlockQuads];  // [read][quad of the block]
     for (size_t i = 0; i < static_cast<size_t>(kBlockQuads); i += hn::Lanes(d)) {
