@@ -196,11 +196,25 @@ HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relativ
   staging.last = sequence[count - 1];
 }
 
+// Whether every coordinate of `count` lanes at u, v is below 2^23 texels of level 0 (width, height
+// as floats): then so is every level's texel coordinate u * size - 0.5 (sizes only shrink), well
+// inside the 2^24 that sample_trilinear_fast checks per quad, so a block of quads checks once.
+HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, float width, float height) {
+  const hn::CappedTag<float, 4 * kLanes> d;
+  const auto limit_u = hn::Set(d, 8388608.0f / width), limit_v = hn::Set(d, 8388608.0f / height);
+  for (size_t i = 0; i < count; i += hn::Lanes(d)) {
+    const auto tame = hn::And(hn::Lt(hn::Abs(hn::Load(d, u + i)), limit_u), hn::Lt(hn::Abs(hn::Load(d, v + i)), limit_v));
+    if (!hn::AllTrue(d, tame)) return false;
+  }
+  return true;
+}
+
 // One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
 // False, touching nothing the caller keeps, when |u|, |v| or a texel coordinate reaches 2^24
-// (the general path's limit, checked the same way). `in`: the job (blend, decode tables, trace;
-// its levels are pair's). u, v: the 4 lanes' coordinates, twice (pairs).
-HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSample8& in, const float* u,
+// (the general path's limit, checked the same way; skipped when `tame`, coordinates_tame of the
+// quad's block). `in`: the job (blend, decode tables, trace; its levels are pair's). u, v: the 4
+// lanes' coordinates, twice (pairs).
+HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSample8& in, bool tame, const float* u,
                                       const float* v, float* const out[4], TraceStaging* staging) {
   const hn::CappedTag<float, kPairs> d;
   const hn::RebindToSigned<decltype(d)> di;
@@ -218,9 +232,11 @@ HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSampl
     const auto uu = hn::LoadU(d, u + i), vv = hn::LoadU(d, v + i);
     const auto x = hn::Sub(hn::Mul(uu, hn::Load(d, pair.width_f + i)), half);
     const auto y = hn::Sub(hn::Mul(vv, hn::Load(d, pair.height_f + i)), half);
-    const auto exact = hn::And(hn::And(hn::Lt(hn::Abs(uu), limit), hn::Lt(hn::Abs(x), limit)),
-                               hn::And(hn::Lt(hn::Abs(vv), limit), hn::Lt(hn::Abs(y), limit)));
-    if (!hn::AllTrue(d, exact)) return false;
+    if (!tame) {
+      const auto exact = hn::And(hn::And(hn::Lt(hn::Abs(uu), limit), hn::Lt(hn::Abs(x), limit)),
+                                 hn::And(hn::Lt(hn::Abs(vv), limit), hn::Lt(hn::Abs(y), limit)));
+      if (!hn::AllTrue(d, exact)) return false;
+    }
     const auto x_floor = hn::Floor(x), y_floor = hn::Floor(y);
     hn::Store(hn::Sub(x, x_floor), d, a + i);
     hn::Store(hn::Sub(y, y_floor), d, b + i);

@@ -204,6 +204,12 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
         hn::Store(hn::IfThenElseZero(mipmapped, hn::Sub(clamped, level)), d, blend_block[r] + i);
       }
     }
+    bool tame[QuadBatch8::kMaxReads];
+    for (int r = 0; r < batch.read_count; ++r) {
+      const Texture2D::Level& base = batch.reads[r].levels[0];
+      tame[r] = coordinates_tame(block_u, block_v, kBlockQuads * kLanes, static_cast<float>(base.width),
+                                 static_cast<float>(base.height));
+    }
     for (int j = 0; j < quads; ++j, first_read = 0) {
       const int q = block + j;
       const int f0 = q * kLanes;
@@ -252,7 +258,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
             pair.prepare(job.levels[0], static_cast<int>(read.max_level) - level, read.wrap_u, read.wrap_v);
           }
           if (pair.usable) {
-            if (!sample_trilinear_fast(pair, job, u, v, out, &staging)) return finish(q * batch.read_count + r);
+            if (!sample_trilinear_fast(pair, job, tame[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
             continue;
           }
         }
