@@ -202,11 +202,12 @@ HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relativ
 HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, float width, float height) {
   const hn::CappedTag<float, 4 * kLanes> d;
   const auto limit_u = hn::Set(d, 8388608.0f / width), limit_v = hn::Set(d, 8388608.0f / height);
-  for (size_t i = 0; i < count; i += hn::Lanes(d)) {
-    const auto tame = hn::And(hn::Lt(hn::Abs(hn::Load(d, u + i)), limit_u), hn::Lt(hn::Abs(hn::Load(d, v + i)), limit_v));
-    if (!hn::AllTrue(d, tame)) return false;
-  }
-  return true;
+  const auto in_limits = [&](size_t i) {
+    return hn::And(hn::Lt(hn::Abs(hn::Load(d, u + i)), limit_u), hn::Lt(hn::Abs(hn::Load(d, v + i)), limit_v));
+  };
+  auto tame = in_limits(0);
+  for (size_t i = hn::Lanes(d); i < count; i += hn::Lanes(d)) tame = hn::And(tame, in_limits(i));
+  return hn::AllTrue(d, tame);
 }
 
 // One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
