@@ -26,8 +26,9 @@ namespace ontile {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// A read's level pair (d, d + 1) prepared for sample_trilinear_fast, per (level, lane) pair:
-// level d in pairs 0-3, level d + 1 in pairs 4-7.
+// A read's level pair (d, d + 1) prepared for sample_fast, per (level, lane) pair: level d in
+// pairs 0-3, level d + 1 in pairs 4-7; or level d alone, in both halves (a single-level job on
+// 8-lane vectors computes its footprints twice at no extra instruction).
 struct FastLevelPair {
   const Texture2D::Level* first = nullptr;  // level d; null: nothing prepared yet
   bool usable = false;  // every condition of the fast path holds (see prepare)
@@ -39,15 +40,17 @@ struct FastLevelPair {
   const int32_t* words = nullptr;
   uint64_t granule_base[2] = {0, 0};  // address / 64 of each level's texel 0
 
-  // Level `first` and the one after it, for reads with repeat wrap on both axes. Usable when
-  // both levels are uncompressed 4-byte texels of power-of-two sizes under 2^31 texels, start
-  // on a 64-byte granule (so texel t's granule is base + t / 16, and no granule holds texels
-  // of both levels), and level d + 1's texels are 4-byte words within int32 reach of level d's.
+  // Level `first` and, with kLevels 2, the one after it, for reads with repeat wrap on both
+  // axes. Usable when the levels are uncompressed 4-byte texels of power-of-two sizes under 2^31
+  // texels, start on a 64-byte granule (so texel t's granule is base + t / 16, and no granule
+  // holds texels of both levels), and level d + 1's texels are 4-byte words within int32 reach
+  // of level d's.
+  template <int kLevels>
   void prepare(const Texture2D::Level* level, int levels_after, WrapMode wrap_u, WrapMode wrap_v) {
     first = level;
     usable = false;
-    if (levels_after < 1 || wrap_u != WrapMode::Repeat || wrap_v != WrapMode::Repeat) return;
-    const Texture2D::Level* pair[2] = {level, level + 1};
+    if (levels_after < kLevels - 1 || wrap_u != WrapMode::Repeat || wrap_v != WrapMode::Repeat) return;
+    const Texture2D::Level* pair[2] = {level, level + (kLevels - 1)};
     for (const Texture2D::Level* l : pair) {
       const uint64_t texels = static_cast<uint64_t>(l->width) * static_cast<uint64_t>(l->height);
       if (l->memory_bytes_per_texel != 4 || l->block_bytes != 0 || texels >= (uint64_t{1} << 31) ||
@@ -110,16 +113,17 @@ HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t
 }
 
 // Per footprint shape, how its 4 granules compact: shape bit k - 1 set when tap k's granule
-// repeats tap k - 1's (taps t00, t10, t01, t11), kCompactWords[shape] the 32-bit lane indices
-// that move the kept 64-bit granules to the front, kKept[shape] how many there are.
+// repeats tap k - 1's (taps t00, t10, t01, t11), bit 3 when t00 repeats the footprint before's
+// last; words[shape] the 32-bit lane indices that move the kept 64-bit granules to the front,
+// kept[shape] how many there are.
 struct FootprintCompaction {
-  int32_t words[8][8];
-  int kept[8];
+  int32_t words[16][8];
+  int kept[16];
   constexpr FootprintCompaction() : words{}, kept{} {
-    for (int shape = 0; shape < 8; ++shape) {
+    for (int shape = 0; shape < 16; ++shape) {
       int count = 0;
       for (int tap = 0; tap < 4; ++tap) {
-        if (tap > 0 && (shape >> (tap - 1)) & 1) continue;
+        if ((shape >> (tap == 0 ? 3 : tap - 1)) & 1) continue;
         words[shape][2 * count] = 2 * tap;
         words[shape][2 * count + 1] = 2 * tap + 1;
         ++count;
@@ -134,13 +138,14 @@ struct FootprintCompaction {
 };
 inline constexpr FootprintCompaction kFootprintCompaction{};
 
-// Appends a trilinear quad's granules, footprints in any shape: the scalar sampler's order (lane
-// by lane, level d then d + 1, taps t00, t10, t01, t11), repeats of the previous granule removed.
-// Levels share no granule (prepare), so only taps of one footprint repeat each other, and the
-// quad's first granule the trace's last. relative[t][pair]: tap t's granule relative to the
+// Appends a quad's granules, footprints in any shape: the scalar sampler's order (lane by lane,
+// level d then, with `levels` 2, d + 1, taps t00, t10, t01, t11), repeats of the previous granule
+// removed. Levels share no granule (prepare), so with two levels only taps of one footprint
+// repeat each other; with one, a lane's t00 may also repeat the lane before's t11. The quad's
+// first granule may repeat the trace's last. relative[t][pair]: tap t's granule relative to the
 // pair's level base.
-HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relative[4][kPairs],
-                                std::vector<uint64_t>& trace, TraceStaging& staging) {
+HWY_INLINE void stage_footprints(const FastLevelPair& pair, const int32_t relative[4][kPairs], int levels,
+                                 std::vector<uint64_t>& trace, TraceStaging& staging) {
   if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
   const uint64_t first = pair.granule_base[0] + static_cast<uint32_t>(relative[0][0]);
   const int kept_first = first != staging.last;
@@ -161,14 +166,21 @@ HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relativ
     const auto g01 = hn::Load(di, relative[2]), g11 = hn::Load(di, relative[3]);
     alignas(32) int32_t shape[kPairs];
     alignas(32) int32_t footprint[kPairs][4];  // [pair][tap]
-    hn::Store(hn::Or(hn::IfThenElseZero(hn::Eq(g10, g00), hn::Set(di, 1)),
-                     hn::Or(hn::IfThenElseZero(hn::Eq(g01, g10), hn::Set(di, 2)),
-                            hn::IfThenElseZero(hn::Eq(g11, g01), hn::Set(di, 4)))),
-              di, shape);
+    auto shapes = hn::Or(hn::IfThenElseZero(hn::Eq(g10, g00), hn::Set(di, 1)),
+                         hn::Or(hn::IfThenElseZero(hn::Eq(g01, g10), hn::Set(di, 2)),
+                                hn::IfThenElseZero(hn::Eq(g11, g01), hn::Set(di, 4))));
+    if (levels == 1) {
+      // Lane k's t00 against lane k - 1's t11 (lane 0's against the trace: kept_first). The
+      // load starts one element before relative[3], inside the same array.
+      const auto lane_before_last = hn::LoadU(di, &relative[3][0] - 1);
+      const auto merges = hn::AndNot(hn::RebindMask(di, hn::FirstN(di, 1)), hn::Eq(g00, lane_before_last));
+      shapes = hn::Or(shapes, hn::IfThenElseZero(merges, hn::Set(di, 8)));
+    }
+    hn::Store(shapes, di, shape);
     hn::StoreInterleaved4(g00, g10, g01, g11, di, &footprint[0][0]);
     const hn::Vec<decltype(d64)> base[2] = {hn::Set(d64, pair.granule_base[0]), hn::Set(d64, pair.granule_base[1])};
     for (int lane = 0; lane < kLanes; ++lane) {
-      for (int level = 0; level < 2; ++level) {
+      for (int level = 0; level < levels; ++level) {
         const int p = level * kLanes + lane;
         const auto granules = hn::Add(base[level], hn::BitCast(d64, hn::PromoteTo(ds64, hn::Load(d32, footprint[p]))));
         const auto compact = hn::SetTableIndices(du32, kFootprintCompaction.words[shape[p]]);
@@ -181,7 +193,7 @@ HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relativ
   {
     uint64_t last = first;
     for (int lane = 0; lane < kLanes; ++lane) {
-      for (int level = 0; level < 2; ++level) {
+      for (int level = 0; level < levels; ++level) {
         const uint64_t base = pair.granule_base[level];
         for (int t = 0; t < 4; ++t) {
           const uint64_t granule = base + static_cast<uint32_t>(relative[t][level * kLanes + lane]);
@@ -198,7 +210,7 @@ HWY_INLINE void stage_trilinear(const FastLevelPair& pair, const int32_t relativ
 
 // Whether every coordinate of `count` lanes at u, v is below 2^23 texels of level 0 (width, height
 // as floats): then so is every level's texel coordinate u * size - 0.5 (sizes only shrink), well
-// inside the 2^24 that sample_trilinear_fast checks per quad, so a block of quads checks once.
+// inside the 2^24 that sample_fast checks per quad, so a block of quads checks once.
 HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, float width, float height) {
   const hn::CappedTag<float, 4 * kLanes> d;
   const auto limit_u = hn::Set(d, 8388608.0f / width), limit_v = hn::Set(d, 8388608.0f / height);
@@ -210,13 +222,41 @@ HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, f
   return hn::AllTrue(d, tame);
 }
 
-// One trilinear quad on a prepared pair: channel c of lane i to out[c][i], the trace staged.
-// False, touching nothing the caller keeps, when |u|, |v| or a texel coordinate reaches 2^24
-// (the general path's limit, checked the same way; skipped when `tame`, coordinates_tame of the
-// quad's block). `in`: the job (blend, decode tables, trace; its levels are pair's). u, v: the 4
-// lanes' coordinates, twice (pairs).
-HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSample8& in, bool tame, const float* u,
-                                      const float* v, float* const out[4], TraceStaging* staging) {
+// Appends a single-level quad's granules when every footprint is regular (each row's two texels
+// share a granule, the two rows do not) and no lane's first granule repeats the lane before's
+// last: the trace takes t00, t01 lane by lane (texture_quad_trace-inl.h's regular case).
+HWY_INLINE void stage_regular_single(const FastLevelPair& level, const int32_t top[kPairs],
+                                     const int32_t bottom[kPairs], std::vector<uint64_t>& trace,
+                                     TraceStaging& staging) {
+  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
+  const uint64_t first = level.granule_base[0] + static_cast<uint32_t>(top[0]);
+  const int kept_first = first != staging.last;
+  uint64_t* const sequence = staging.granules + staging.count + kept_first;
+  const hn::CappedTag<uint64_t, kLanes> d64;
+  const hn::Rebind<int64_t, decltype(d64)> ds64;
+  const hn::Rebind<int32_t, decltype(d64)> d32;
+  const auto base = hn::Set(d64, level.granule_base[0]);
+  const auto granule = [&](const int32_t* relative) {
+    return hn::Add(base, hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, relative))));
+  };
+  for (size_t i = 0; i < static_cast<size_t>(kLanes); i += hn::Lanes(d64)) {
+    hn::StoreInterleaved2(granule(top + i), granule(bottom + i), d64, sequence + 2 * i);
+  }
+  constexpr int kCount = 2 * kLanes;
+  staging.count += kept_first + kCount - 1;
+  staging.last = sequence[kCount - 1];
+}
+
+// One quad on a prepared pair (a trilinear job) or level (in.level_count 1): channel c of lane i
+// to out[c][i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
+// texel coordinate reaches 2^24 (the general path's limit, checked the same way; skipped when
+// `tame`, coordinates_tame of the quad's block). `in`: the job (blend, decode tables, trace; its
+// levels are pair's). u, v: the 4 lanes' coordinates, twice (pairs).
+// One instance serves both: a single level runs the trilinear filter on its duplicated level
+// with blend 0, which gives the single-level filter's bits (v (1 - 0) + w 0 = v for the finite,
+// non-negative filtered values), so the hot loop carries one copy of the code.
+HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bool tame, const float* u,
+                            const float* v, float* const out[4], TraceStaging* staging) {
   const hn::CappedTag<float, kPairs> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
@@ -266,14 +306,26 @@ HWY_INLINE bool sample_trilinear_fast(const FastLevelPair& pair, const QuadSampl
     }
   }
   if (in.trace) {
-    if (in.trace_repeats == 1) {
+    if (in.trace_repeats != 1) {
+      if (in.level_count == 2) {
+        record_trace<2>(in, true, taps, staging);
+      } else {
+        record_trace<1>(in, true, taps, staging);
+      }
+    } else if (in.level_count == 2) {
       if (regular) {
         stage_regular_trilinear(pair, relative[0], relative[2], *in.trace, *staging);
       } else {
-        stage_trilinear(pair, relative, *in.trace, *staging);
+        stage_footprints(pair, relative, 2, *in.trace, *staging);
       }
     } else {
-      record_trace<2>(in, true, taps, staging);
+      // One level: a lane's first granule may repeat the lane before's last.
+      for (int lane = 1; lane < kLanes; ++lane) regular &= relative[0][lane] != relative[3][lane - 1];
+      if (regular) {
+        stage_regular_single(pair, relative[0], relative[2], *in.trace, *staging);
+      } else {
+        stage_footprints(pair, relative, 1, *in.trace, *staging);
+      }
     }
   }
   filter_quad<2>(d, in, kPairs, packed, a, b, out);

@@ -111,8 +111,9 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
   // facts[r]: of read r's levels facts_level[r] and the one after it (when there is one).
   LevelFacts facts[QuadBatch8::kMaxReads];
   const Texture2D::Level* facts_level[QuadBatch8::kMaxReads];
-  // fast[r]: read r's level pair of its last trilinear job, prepared for sample_trilinear_fast.
-  FastLevelPair fast[QuadBatch8::kMaxReads];
+  // Read r's level pair of its last trilinear job and level of its last single-level job,
+  // prepared for sample_fast.
+  FastLevelPair fast_pair[QuadBatch8::kMaxReads], fast_single[QuadBatch8::kMaxReads];
   for (int r = 0; r < batch.read_count; ++r) {
     const BatchRead8& read = batch.reads[r];
     facts_level[r] = nullptr;
@@ -251,16 +252,20 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
           }
         }
         float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
-        if (job.level_count == 2) {
-          FastLevelPair& pair = fast[r];
-          if (pair.first != job.levels[0]) {
-            const int level = static_cast<int>(job.levels[0] - read.levels);
-            pair.prepare(job.levels[0], static_cast<int>(read.max_level) - level, read.wrap_u, read.wrap_v);
+        // The common case on its fast path: level pairs for trilinear jobs, single levels for the
+        // rest, each prepared when a read's job moves to another level.
+        FastLevelPair& prepared = job.level_count == 2 ? fast_pair[r] : fast_single[r];
+        if (prepared.first != job.levels[0]) {
+          const int levels_after = static_cast<int>(read.max_level) - static_cast<int>(job.levels[0] - read.levels);
+          if (job.level_count == 2) {
+            prepared.prepare<2>(job.levels[0], levels_after, read.wrap_u, read.wrap_v);
+          } else {
+            prepared.prepare<1>(job.levels[0], levels_after, read.wrap_u, read.wrap_v);
           }
-          if (pair.usable) {
-            if (!sample_trilinear_fast(pair, job, tame[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
-            continue;
-          }
+        }
+        if (prepared.usable) {
+          if (!sample_fast(prepared, job, tame[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
+          continue;
         }
         if (job.levels[0] != facts_level[r]) {
           facts_level[r] = job.levels[0];
