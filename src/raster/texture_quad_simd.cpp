@@ -1,6 +1,7 @@
-// SIMD quad sampler (see texture_quad_simd.h), compiled per target by Highway's foreach_target.
-// Only IEEE multiply, add, subtract, square root and floor: every target gives the bits of the
-// scalar path.
+// SIMD quad sampler (see texture_quad_simd.h), compiled per target by Highway's foreach_target:
+// the batch driver (level of detail and level selection per block of quads, then each job on
+// the fast path of texture_quad_fast-inl.h or the general one below). Only IEEE multiply, add,
+// subtract, square root and floor: every target gives the bits of the scalar path.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "raster/texture_quad_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
