@@ -68,6 +68,8 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
   std::mt19937 fetch_rng(12);  // apart, so the other draws stay those of rng alone
   const std::shared_ptr<const Texture2D> textures[] = {
       Texture2D::from_rgba8(64, 64, random_bytes(rng, 64, 64), true, "srgb pot"),
+      // Wide power-of-two levels: rows of several granules, footprints of every shape.
+      Texture2D::from_rgba8(128, 32, random_bytes(rng, 128, 32), false, "unorm pot wide"),
       Texture2D::from_rgba8(45, 29, random_bytes(rng, 45, 29), false, "unorm npot"),
       Texture2D::from_rgba8(3, 2, random_bytes(rng, 3, 2), false, "tiny"),
       Texture2D::from_rgba8(40, 24, random_bytes(rng, 40, 24), true, "astc", TextureCompression::Astc4x4),
