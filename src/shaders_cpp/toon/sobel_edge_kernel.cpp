@@ -72,6 +72,11 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
     return std::fabs(o[0]) < kSmall && std::fabs(o[2]) < kSmall && o[0] <= o[1] && o[1] <= o[2];
   };
   const bool outer_taps_bound = ordered(l.offset_u) && ordered(l.offset_v);
+  // The centre taps sit at uv + (+-0): u + 0 is u (or +0 for u = -0, the same texel 0), so
+  // where the colour texture has the grid's size its texel is the centre tap's.
+  const bool color_is_centre = l.color_width == l.grid_width &&
+                               l.color_height == l.grid_height && l.offset_u[1] == 0.0f &&
+                               l.offset_v[1] == 0.0f;
   VI min_x = hn::Set(di, INT32_MAX), min_y = min_x;
   VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
@@ -96,6 +101,11 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
         widen(x[a], x[a], min_x, max_x);
         widen(y[a], y[a], min_y, max_y);
       }
+    }
+    if (color_is_centre) {
+      hn::Store(x[1], di, taps.color_x + f);
+      hn::Store(y[1], di, taps.color_y + f);
+      continue;
     }
     const VI color_x = nearest_clamped_texel(df, uf, l.color_width);
     const VI color_y = nearest_clamped_texel(df, vf, l.color_height);

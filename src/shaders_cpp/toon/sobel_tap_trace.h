@@ -116,7 +116,7 @@ class TapTrace {
   std::vector<uint64_t>* sink_;  // the thread's trace when the TapTrace was made, or null
   uint64_t last_granule_;        // the trace's last granule, carried across the batch
   int count_ = 0;
-  std::array<uint64_t, kBatchFragments * kMaxReadsPerFragment> granules_;
+  std::array<uint64_t, kBatchFragments * kMaxReadsPerFragment + kTraceSlack> granules_;
 };
 
 }  // namespace ontile::sobel
