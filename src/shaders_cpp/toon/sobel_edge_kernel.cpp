@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include "raster/lane_bits-inl.h"
+#include "shaders_cpp/toon/sobel_edge_math-inl.h"
 
 #include <climits>
 #include <cmath>
@@ -272,20 +273,6 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
   }
 }
 
-// The Sobel kernels on tap values t[k] (sobel_magnitude): ((r0 + r2) + 2 r1) of differences.
-HWY_INLINE VF sobel_x(DF df, const VF t[kTaps]) {
-  return hn::Add(hn::Add(hn::Sub(t[2], t[0]), hn::Sub(t[8], t[6])),
-                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[5], t[3])));
-}
-HWY_INLINE VF sobel_y(DF df, const VF t[kTaps]) {
-  return hn::Add(hn::Add(hn::Sub(t[6], t[0]), hn::Sub(t[8], t[2])),
-                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[7], t[1])));
-}
-// glm::dot of two 3-vectors: (x * x' + y * y') + z * z'.
-HWY_INLINE VF dot3(VF ax, VF ay, VF az, VF bx, VF by, VF bz) {
-  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
-}
-
 void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTaps& taps,
                      const NeighbourhoodGrid& grid, const EdgeTest& test, FragmentEdges& edges) {
   const DF df;
@@ -304,61 +291,17 @@ void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTa
           hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Load(di, taps.y[a] + f), y0), y1), y0), width);
     }
     VI cell[kTaps];
-    VF z[kTaps];
     for (int k = 0; k < kTaps; ++k) {
       cell[k] = hn::Add(row_start[k / kTapsPerAxis], column[k % kTapsPerAxis]);
-      z[k] = hn::GatherIndex(df, grid.linear_z, cell[k]);
     }
-    VF depth_limit = hn::Mul(hn::Set(df, test.depth_limit_scale), z[kCentreTap]);
-    if (test.has_normal) {
-      // grazing_cosine: the view ray through the pixel against the centre's normal.
-      const VF nx = hn::GatherIndex(df, grid.normal[0], cell[kCentreTap]);
-      const VF ny = hn::GatherIndex(df, grid.normal[1], cell[kCentreTap]);
-      const VF nz = hn::GatherIndex(df, grid.normal[2], cell[kCentreTap]);
-      const VF one = hn::Set(df, 1.0f), two = hn::Set(df, 2.0f), minus_one = hn::Set(df, -1.0f);
-      const VF rx = hn::Mul(hn::Set(df, test.view_ray_scale.x),
-                            hn::Sub(hn::Mul(two, hn::LoadU(df, u + f)), one));
-      const VF ry = hn::Mul(hn::Set(df, test.view_ray_scale.y),
-                            hn::Sub(one, hn::Mul(two, hn::LoadU(df, v + f))));
-      const VF normal_len = hn::Sqrt(dot3(nx, ny, nz, nx, ny, nz));
-      const VF ray_len = hn::Sqrt(dot3(rx, ry, minus_one, rx, ry, minus_one));
-      const VF cosine =
-          hn::Div(hn::Abs(dot3(nx, ny, nz, rx, ry, minus_one)), hn::Mul(normal_len, ray_len));
-      const VF min_cosine = hn::Set(df, test.min_grazing_cosine);
-      VF grazing = hn::IfThenElse(hn::Gt(cosine, min_cosine), cosine, min_cosine);
-      grazing = hn::IfThenElse(hn::Gt(normal_len, hn::Zero(df)), grazing, min_cosine);
-      depth_limit = hn::Div(depth_limit, grazing);
-    }
-    const VF gx = sobel_x(df, z), gy = sobel_y(df, z);
-    const hn::Mask<DF> depth_edge =
-        hn::Gt(hn::Sqrt(hn::Add(hn::Mul(gx, gx), hn::Mul(gy, gy))), depth_limit);
-    hn::Mask<DF> edge = depth_edge;
-    if (test.has_normal && !hn::AllTrue(df, depth_edge)) {
-      // sobel_vector_magnitude where depth found no edge.
-      VF gxs[3], gys[3];
-      for (int c = 0; c < 3; ++c) {
-        VF t[kTaps];
-        for (int k = 0; k < kTaps; ++k) t[k] = hn::GatherIndex(df, grid.normal[c], cell[k]);
-        gxs[c] = sobel_x(df, t);
-        gys[c] = sobel_y(df, t);
-      }
-      const VF magnitude = hn::Sqrt(hn::Add(dot3(gxs[0], gxs[1], gxs[2], gxs[0], gxs[1], gxs[2]),
-                                            dot3(gys[0], gys[1], gys[2], gys[0], gys[1], gys[2])));
-      edge = hn::Or(edge, hn::Gt(magnitude, hn::Set(df, test.normal_threshold)));
-    }
-    // The first tap of the smallest stored depth, the centre keeping ties: only an edge reads
-    // it (the border colour), so vectors without one skip its gathers.
-    VI nearest = hn::Set(di, kCentreTap);
-    if (!hn::AllFalse(df, edge)) {
-      VF nearest_depth = hn::GatherIndex(df, grid.depth, cell[kCentreTap]);
-      for (int k = 0; k < kTaps; ++k) {
-        if (k == kCentreTap) continue;
-        const VF d = hn::GatherIndex(df, grid.depth, cell[k]);
-        const hn::Mask<DF> closer = hn::Lt(d, nearest_depth);
-        nearest_depth = hn::IfThenElse(closer, d, nearest_depth);
-        nearest = hn::IfThenElse(hn::RebindMask(di, closer), hn::Set(di, k), nearest);
-      }
-    }
+    hn::Mask<DF> depth_edge, edge;
+    VI nearest;
+    edge_lanes(
+        df, hn::LoadU(df, u + f), hn::LoadU(df, v + f), test,
+        [&](int k) { return hn::GatherIndex(df, grid.linear_z, cell[k]); },
+        [&](int k) { return hn::GatherIndex(df, grid.depth, cell[k]); },
+        [&](int c, int k) { return hn::GatherIndex(df, grid.normal[c], cell[k]); }, depth_edge,
+        edge, nearest);
     hn::Store(nearest, di, edges.nearest_tap + f);
     edges.depth_edge |= mask_bits(df, depth_edge) << f;
     edges.edge |= mask_bits(df, edge) << f;
