@@ -78,6 +78,16 @@ struct TraceTemplates {
   static constexpr int kPairReads = 40;  // 2 * (18 + 1), a multiple of 8
   alignas(64) uint64_t pair_reads[kTemplateClasses * kTemplateClasses][kPairReads] = {};
   int pair_count[kTemplateClasses * kTemplateClasses] = {};
+  // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
+  // granule and has no edge reads its quads' pairs in the classes of such a row: the left
+  // column of its first pixel and the right column of its last in the neighbouring granules.
+  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset.
+  bool rows = false;
+  static constexpr int kRowQuads = 8;
+  static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
+  uint32_t row_keys[kRowQuads] = {};
+  alignas(64) uint64_t row_reads[kRowReads] = {};
+  int row_count = 0;
 };
 
 // The planes a batch reads. Depth, normal and border share the depth grid's size.

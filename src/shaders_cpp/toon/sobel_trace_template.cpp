@@ -45,36 +45,26 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   const hn::RebindToSigned<DU> di;
   const size_t lanes = hn::Lanes(du);
   const auto load = [di, du](const int32_t* p) { return hn::BitCast(du, hn::Load(di, p)); };
-  // Per fragment: its class, its offset (y * row_granules + x >> column_shift of the centre)
-  // and its colour granule (as the 32-bit kernel computes it); per even fragment, the pair
-  // template of it and the next.
+  // Per fragment: its class and its offset (y * row_granules + x >> column_shift of the
+  // centre); per even fragment, the pair template of it and the next.
   alignas(64) uint32_t read_class[kBatchFragments];
   alignas(64) uint32_t pair_key[kBatchFragments];
   alignas(64) uint64_t offset[kBatchFragments];
-  alignas(64) uint64_t color_granule[kBatchFragments];
   const DW dw;
   // Lanes widened to 64 bits plus add, stored at to (as many entries as the vector's lanes).
-  const auto store_wide = [&](VU v, uint64_t add, uint64_t* to) {
+  const auto store_wide = [&](VU v, uint64_t* to) {
 #if HWY_TARGET == HWY_SCALAR
-    to[0] = hn::GetLane(v) + add;
+    to[0] = hn::GetLane(v);
 #else
     const hn::Half<DU> dh;
     const hn::Rebind<uint64_t, decltype(dh)> dw_half;
-    const auto a = hn::Set(dw_half, add);
-    hn::Store(hn::Add(hn::PromoteTo(dw_half, hn::LowerHalf(dh, v)), a), dw_half, to);
-    hn::Store(hn::Add(hn::PromoteTo(dw_half, hn::UpperHalf(dh, v)), a), dw_half,
-              to + hn::Lanes(dh));
+    hn::Store(hn::PromoteTo(dw_half, hn::LowerHalf(dh, v)), dw_half, to);
+    hn::Store(hn::PromoteTo(dw_half, hn::UpperHalf(dh, v)), dw_half, to + hn::Lanes(dh));
 #endif
   };
-  const uint64_t untag_color = planes.color.first_granule();
   const VU one = hn::Set(du, 1u);
   const VU not_bit0 = hn::Set(du, ~1u);
   const VU row_granules = hn::Set(du, t.row_granules);
-  const TracePlane& c = planes.color;
-  const VU color_origin = hn::Set(du, static_cast<uint32_t>(c.origin & 63u));
-  const VU color_row_bytes =
-      hn::Set(du, static_cast<uint32_t>(c.texel_bytes * static_cast<uint64_t>(c.width)));
-  const VU color_texel_bytes = hn::Set(du, static_cast<uint32_t>(c.texel_bytes));
   const VU depth_edge_class = hn::Set(du, 4u);
   // Without a normal plane a depth edge changes no read: one class.
   const uint64_t depth_edges = planes.has_normal ? edges.depth_edge : 0;
@@ -95,13 +85,10 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
     const VU cls = hn::Or(hn::Or(left, hn::ShiftLeft<1>(right)), depth_edge);
     hn::Store(cls, du, read_class + f);
     const VU fragment_offset = hn::Add(hn::Mul(y1, row_granules), centre);
-    store_wide(fragment_offset, 0, offset + f);
-    const VU color_x = load(taps.color_x + f), color_y = load(taps.color_y + f);
-    const VU color_row = hn::Add(hn::Mul(color_y, color_row_bytes), color_origin);
-    store_wide(hn::ShiftRight<6>(hn::Add(color_row, hn::Mul(color_x, color_texel_bytes))),
-               untag_color, color_granule + f);
+    store_wide(fragment_offset, offset + f);
 #if HWY_TARGET != HWY_SCALAR
     if (t.pairs) {
+      const VU color_x = load(taps.color_x + f), color_y = load(taps.color_y + f);
       hn::Store(hn::Or(cls, hn::ShiftLeft<3>(hn::Shuffle2301(cls))), du, pair_key + f);
       const auto at_centre = hn::And(hn::Eq(color_x, x1), hn::Eq(color_y, y1));
       const auto one_offset = hn::Eq(fragment_offset, hn::Shuffle2301(fragment_offset));
@@ -115,6 +102,7 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   const int first = std::countr_zero(active);
   if (t.reads[read_class[first]][0] + offset[first] == last_granule) return -1;
   const size_t wide = hn::Lanes(dw);
+  const TracePlane& c = planes.color;
   const TracePlane& b = planes.border;
   const uint64_t border_reads = planes.has_border ? active & edges.edge : 0;
   // Even fragments that start a pair: both active, pairable and without a border read.
@@ -141,7 +129,9 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
     }
     written += n;
     // The colour follows a depth or normal read (other tags): always new.
-    const uint64_t color = color_granule[f];
+    const uint64_t color_texel = static_cast<uint64_t>(taps.color_y[f]) * c.width +
+                                 static_cast<uint64_t>(taps.color_x[f]);
+    const uint64_t color = (c.origin + color_texel * c.texel_bytes) >> 6;
     out[written++] = color;
     if ((border_reads >> f) & 1u) {
       const int tap = edges.nearest_tap[f];
@@ -152,17 +142,54 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
       written += g != color;
     }
   };
-  for (int f = 0; f < count; f += 2) {
-    if ((pair_starts >> f) & 1u) {
-      const uint64_t* const reads = t.pair_reads[pair_key[f]];
-      const int n = t.pair_count[pair_key[f]];
+  // Pair template reads plus add, at out + written.
+  const auto pair = [&](const uint64_t* reads, int n, hn::Vec<DW> add) {
+    for (int at = 0; at < n; at += 8) block(reads, add, at);
+    written += n;
+  };
+  // Whether the quad row of fragments [first, first + 32) reads row_reads plus its offset:
+  // every pair starts a pair template of row_keys, one offset per pixel row.
+  const auto row_fits = [&](int first) {
+    constexpr uint64_t kRowPairs = 0x55555555u;
+    if (((pair_starts >> first) & kRowPairs) != kRowPairs) return false;
+    const uint64_t upper = offset[first], lower = upper + t.row_granules;
+    for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
+      const int f = first + 4 * q;
+      if (pair_key[f] != t.row_keys[q] || pair_key[f + 2] != t.row_keys[q] ||
+          offset[f] != upper || offset[f + 2] != lower) {
+        return false;
+      }
+    }
+    return true;
+  };
+  constexpr int kQuadRowFragments = 4 * TraceTemplates::kRowQuads;
+  for (int f = 0; f < count; f += 4) {
+    if (t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count && row_fits(f)) {
       const auto add = hn::Set(dw, offset[f]);
-      for (int at = 0; at < n; at += 8) block(reads, add, at);
-      written += n;
+      for (int at = 0; at < t.row_count; at += 8) block(t.row_reads, add, at);
+      written += t.row_count;
+      f += kQuadRowFragments - 4;
       continue;
     }
-    if ((active >> f) & 1u) one_fragment(f);
-    if ((active >> (f + 1)) & 1u) one_fragment(f + 1);
+    // A quad whose rows are pairs of one template, the lower row's offset one row on (no
+    // edge nearby): both pairs from the template's reads.
+    if (((pair_starts >> f) & 5u) == 5u && pair_key[f + 2] == pair_key[f] &&
+        offset[f + 2] == offset[f] + t.row_granules) {
+      const uint64_t* const reads = t.pair_reads[pair_key[f]];
+      const int n = t.pair_count[pair_key[f]];
+      const auto upper = hn::Set(dw, offset[f]);
+      pair(reads, n, upper);
+      pair(reads, n, hn::Add(upper, hn::Set(dw, uint64_t{t.row_granules})));
+      continue;
+    }
+    for (int g = f; g < f + 4; g += 2) {
+      if ((pair_starts >> g) & 1u) {
+        pair(t.pair_reads[pair_key[g]], t.pair_count[pair_key[g]], hn::Set(dw, offset[g]));
+        continue;
+      }
+      if ((active >> g) & 1u) one_fragment(g);
+      if ((active >> (g + 1)) & 1u) one_fragment(g + 1);
+    }
   }
   // Every read written is new: the last is the trace's last granule.
   last_granule = out[written - 1];
@@ -237,6 +264,22 @@ void BatchTracePlanes::prepare_templates() {
       t.pair_count[key] = n;
       for (int i = n; i < TraceTemplates::kPairReads; ++i) t.pair_reads[key][i] = 0;
     }
+  }
+  t.rows = t.pairs && texel_bytes == 4;
+  if (t.rows) {
+    int n = 0;
+    for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
+      // Classes: bit 0 the left column, bit 1 the right one in the neighbouring granule.
+      const uint32_t key = q == 0                              ? 1u + kTemplateClasses * 0u
+                           : q == TraceTemplates::kRowQuads - 1 ? 0u + kTemplateClasses * 2u
+                                                                : 0u;
+      t.row_keys[q] = key;
+      for (const uint64_t row : {uint64_t{0}, uint64_t{t.row_granules}}) {
+        for (int i = 0; i < t.pair_count[key]; ++i) t.row_reads[n++] = t.pair_reads[key][i] + row;
+      }
+    }
+    t.row_count = n;
+    for (int i = n; i < TraceTemplates::kRowReads; ++i) t.row_reads[i] = 0;
   }
   t.usable = true;
 }
