@@ -128,7 +128,7 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
   const std::vector<std::string> targets = simd_targets();
   const AutomaticTargetOnExit restore;
   const uint64_t texel_sizes[] = {4, 4, 8, 16, 2};
-  int taken = 0, batches = 0, pair_configs = 0;
+  int taken = 0, batches = 0, pair_configs = 0, own_color_configs = 0;
   for (int config = 0; config < 60; ++config) {
     const uint64_t texel_bytes = texel_sizes[pick(5)];
     const int granule_texels = static_cast<int>(64 / texel_bytes);
@@ -140,15 +140,19 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
     planes.depth = plane(3, 4096 * pick(3), texel_bytes, w, h);
     planes.has_normal = config % 4 != 0;
     planes.normal = plane(4, 64 * pick(20), texel_bytes, w, h);
-    // Every other config a colour plane laid out as depth: quad-row pairs from pair templates.
-    planes.color = config % 2 == 0 ? plane(5, 64 * pick(4), texel_bytes, color_w, color_h)
-                                   : plane(5, 4 * pick(20), texel_sizes[pick(5)], color_w, color_h);
+    // Every other config a colour plane laid out as depth (quad-row pairs from pair templates),
+    // every fourth one starting on a granule with another texel size (pairs with their own
+    // colour offset where its rows are whole granules).
+    planes.color = config % 2 == 0   ? plane(5, 64 * pick(4), texel_bytes, color_w, color_h)
+                   : config % 4 == 1 ? plane(5, 64 * pick(4), texel_sizes[1 + pick(3)], color_w, color_h)
+                                     : plane(5, 4 * pick(20), texel_sizes[pick(5)], color_w, color_h);
     planes.has_border = config % 3 != 0;
     planes.border = config % 9 == 8 ? planes.normal : plane(6, 4 * pick(5), 4, w, h);
     if (config % 11 == 10 && color_w == w && color_h == h) planes.border = planes.color;
     planes.prepare_tags();
     ASSERT_TRUE(planes.templates.usable) << "config " << config;
     pair_configs += planes.templates.pairs;
+    own_color_configs += planes.templates.pairs && !planes.templates.color_at_offset;
     for (int b = 0; b < 24; ++b) {
       force_simd_target(targets[(config + b) % targets.size()]);
       const int kind = b % 4;  // interior, corner (clamped), thick taps, scattered
@@ -205,6 +209,7 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
   }
   EXPECT_EQ(batches, 60 * 24);
   EXPECT_GT(pair_configs, 20);
+  EXPECT_GT(own_color_configs, 5);
   EXPECT_GT(taken, batches / 6);  // most interior batches (a quarter), off the top and bottom rows
 }
 

@@ -78,6 +78,15 @@ struct TraceTemplates {
   static constexpr int kPairReads = 40;  // 2 * (18 + 1), a multiple of 8
   alignas(64) uint64_t pair_reads[kTemplateClasses * kTemplateClasses][kPairReads] = {};
   int pair_count[kTemplateClasses * kTemplateClasses] = {};
+  // Pairs also where the colour plane starts on a granule and its rows are whole granules but
+  // its texels or rows differ from depth's (color_at_offset false): a fragment's colour read
+  // is then the colour plane's origin / 64 plus its own colour offset, cy * color_row_granules
+  // + (cx >> color_column_shift) (the two fragments of a pair share it), written over the
+  // pair template's colour reads, at pair_first_color and the pair's last read.
+  bool color_at_offset = false;
+  int color_column_shift = 0;
+  uint32_t color_row_granules = 0;
+  int pair_first_color[kTemplateClasses * kTemplateClasses] = {};
   // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
   // granule and has no edge reads its quads' pairs in the classes of such a row: the left
   // column of its first pixel and the right column of its last in the neighbouring granules.

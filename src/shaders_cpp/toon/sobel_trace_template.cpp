@@ -50,6 +50,7 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   alignas(64) uint32_t read_class[kBatchFragments];
   alignas(64) uint32_t pair_key[kBatchFragments];
   alignas(64) uint64_t offset[kBatchFragments];
+  alignas(64) uint64_t color_offset[kBatchFragments];  // pairs without color_at_offset
   const DW dw;
   // Lanes widened to 64 bits plus add, stored at to (as many entries as the vector's lanes).
   const auto store_wide = [&](VU v, uint64_t* to) {
@@ -69,7 +70,9 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   // Without a normal plane a depth edge changes no read: one class.
   const uint64_t depth_edges = planes.has_normal ? edges.depth_edge : 0;
   VU misfit = hn::Zero(du);
-  uint64_t pairable = 0;  // bit f: fragment f samples the colour at its centre, one offset with its partner
+  // Bit f: fragment f has its partner's offsets (and samples the colour at its centre where
+  // the colour read is at the offset).
+  uint64_t pairable = 0;
   for (int f = 0; f < count; f += static_cast<int>(lanes)) {
     const VU x1 = load(taps.x[1] + f), y1 = load(taps.y[1] + f);
     const auto rows_fit = hn::And(hn::Eq(load(taps.y[0] + f), hn::Sub(y1, one)),
@@ -90,9 +93,17 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
     if (t.pairs) {
       const VU color_x = load(taps.color_x + f), color_y = load(taps.color_y + f);
       hn::Store(hn::Or(cls, hn::ShiftLeft<3>(hn::Shuffle2301(cls))), du, pair_key + f);
-      const auto at_centre = hn::And(hn::Eq(color_x, x1), hn::Eq(color_y, y1));
       const auto one_offset = hn::Eq(fragment_offset, hn::Shuffle2301(fragment_offset));
-      pairable |= mask_bits(du, hn::And(at_centre, one_offset)) << f;
+      if (t.color_at_offset) {
+        const auto at_centre = hn::And(hn::Eq(color_x, x1), hn::Eq(color_y, y1));
+        pairable |= mask_bits(du, hn::And(at_centre, one_offset)) << f;
+      } else {
+        const VU own = hn::Add(hn::Mul(color_y, hn::Set(du, t.color_row_granules)),
+                               hn::ShiftRightSame(color_x, t.color_column_shift));
+        store_wide(own, color_offset + f);
+        const auto one_color_offset = hn::Eq(own, hn::Shuffle2301(own));
+        pairable |= mask_bits(du, hn::And(one_color_offset, one_offset)) << f;
+      }
     }
 #endif
   }
@@ -142,10 +153,24 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
       written += g != color;
     }
   };
-  // Pair template reads plus add, at out + written.
-  const auto pair = [&](const uint64_t* reads, int n, hn::Vec<DW> add) {
-    for (int at = 0; at < n; at += 8) block(reads, add, at);
+  // Pair template `key` at the pair's offset, at out + written; where the colour read is not
+  // at the offset, color (the pair's colour granule) over the template's colour reads.
+  const auto pair = [&](uint32_t key, hn::Vec<DW> add, uint64_t color) {
+    const uint64_t* const reads = t.pair_reads[key];
+    const int n = t.pair_count[key];
+    block(reads, add, 0);  // every pair has at least 12 reads: two blocks always
+    block(reads, add, 8);
+    for (int at = 16; at < n; at += 8) block(reads, add, at);
+    if (!t.color_at_offset) {
+      out[written + t.pair_first_color[key]] = color;
+      out[written + n - 1] = color;
+    }
     written += n;
+  };
+  const uint64_t untag_color = c.first_granule();
+  // The colour granule of fragment f where it is not at the offset (pairs only).
+  const auto own_color = [&](int f) {
+    return t.color_at_offset ? uint64_t{0} : untag_color + color_offset[f];
   };
   // Whether the quad row of fragments [first, first + 32) reads row_reads plus its offset:
   // every pair starts a pair template of row_keys, one offset per pixel row.
@@ -175,16 +200,14 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
     // edge nearby): both pairs from the template's reads.
     if (((pair_starts >> f) & 5u) == 5u && pair_key[f + 2] == pair_key[f] &&
         offset[f + 2] == offset[f] + t.row_granules) {
-      const uint64_t* const reads = t.pair_reads[pair_key[f]];
-      const int n = t.pair_count[pair_key[f]];
       const auto upper = hn::Set(dw, offset[f]);
-      pair(reads, n, upper);
-      pair(reads, n, hn::Add(upper, hn::Set(dw, uint64_t{t.row_granules})));
+      pair(pair_key[f], upper, own_color(f));
+      pair(pair_key[f], hn::Add(upper, hn::Set(dw, uint64_t{t.row_granules})), own_color(f + 2));
       continue;
     }
     for (int g = f; g < f + 4; g += 2) {
       if ((pair_starts >> g) & 1u) {
-        pair(t.pair_reads[pair_key[g]], t.pair_count[pair_key[g]], hn::Set(dw, offset[g]));
+        pair(pair_key[g], hn::Set(dw, offset[g]), own_color(g));
         continue;
       }
       if ((active >> g) & 1u) one_fragment(g);
@@ -252,20 +275,26 @@ void BatchTracePlanes::prepare_templates() {
     t.read_count[cls] = n;
     for (int i = n; i < kTemplateReads; ++i) t.reads[cls][i] = 0;
   }
-  t.pairs = color.origin % 64 == 0 && color.texel_bytes == texel_bytes &&
-            color.width == depth.width;
+  const uint64_t color_row_bytes = color.texel_bytes * static_cast<uint64_t>(color.width);
+  t.pairs = color.origin % 64 == 0 && std::has_single_bit(color.texel_bytes) &&
+            color.texel_bytes <= 64 && color_row_bytes % 64 == 0 && color_row_bytes != 0;
+  t.color_at_offset = t.pairs && color.texel_bytes == texel_bytes && color.width == depth.width;
+  t.color_column_shift = t.pairs ? 6 - std::countr_zero(color.texel_bytes) : 0;
+  t.color_row_granules = static_cast<uint32_t>(color_row_bytes / 64);
   if (t.pairs) {
     for (int key = 0; key < kTemplateClasses * kTemplateClasses; ++key) {
       int n = 0;
-      for (const int cls : {key % kTemplateClasses, key / kTemplateClasses}) {
+      for (int second = 0; second < 2; ++second) {
+        const int cls = second ? key / kTemplateClasses : key % kTemplateClasses;
         for (int i = 0; i < t.read_count[cls]; ++i) t.pair_reads[key][n++] = t.reads[cls][i];
+        if (!second) t.pair_first_color[key] = n;
         t.pair_reads[key][n++] = color.origin >> 6;
       }
       t.pair_count[key] = n;
       for (int i = n; i < TraceTemplates::kPairReads; ++i) t.pair_reads[key][i] = 0;
     }
   }
-  t.rows = t.pairs && texel_bytes == 4;
+  t.rows = t.color_at_offset && texel_bytes == 4;
   if (t.rows) {
     int n = 0;
     for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
