@@ -35,11 +35,13 @@ HWY_INLINE hn::Mask<DU> lanes_of(DU du, uint64_t bits) {
   return hn::Ne(hn::And(word, hn::Load(du, kLaneBit32)), hn::Zero(du));
 }
 
-int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
-                             const FragmentEdges& edges, int count, uint64_t active,
-                             uint64_t* out, uint64_t& last_granule) {
+// The kernel for planes whose colour read is at the offset (kColorAtOffset, as
+// TraceTemplates::color_at_offset says) or not: one build each, no test per pair.
+template <bool kColorAtOffset>
+HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                                    const FragmentEdges& edges, int count, uint64_t active,
+                                    uint64_t* out, uint64_t& last_granule) {
   const TraceTemplates& t = planes.templates;
-  if (!t.usable) return -1;
   if (active == 0) return 0;
   const DU du;
   const hn::RebindToSigned<DU> di;
@@ -94,7 +96,7 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
       const VU color_x = load(taps.color_x + f), color_y = load(taps.color_y + f);
       hn::Store(hn::Or(cls, hn::ShiftLeft<3>(hn::Shuffle2301(cls))), du, pair_key + f);
       const auto one_offset = hn::Eq(fragment_offset, hn::Shuffle2301(fragment_offset));
-      if (t.color_at_offset) {
+      if (kColorAtOffset) {
         const auto at_centre = hn::And(hn::Eq(color_x, x1), hn::Eq(color_y, y1));
         pairable |= mask_bits(du, hn::And(at_centre, one_offset)) << f;
       } else {
@@ -161,7 +163,7 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
     block(reads, add, 0);  // every pair has at least 12 reads: two blocks always
     block(reads, add, 8);
     for (int at = 16; at < n; at += 8) block(reads, add, at);
-    if (!t.color_at_offset) {
+    if (!kColorAtOffset) {
       out[written + t.pair_first_color[key]] = color;
       out[written + n - 1] = color;
     }
@@ -170,7 +172,7 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   const uint64_t untag_color = c.first_granule();
   // The colour granule of fragment f where it is not at the offset (pairs only).
   const auto own_color = [&](int f) {
-    return t.color_at_offset ? uint64_t{0} : untag_color + color_offset[f];
+    return kColorAtOffset ? uint64_t{0} : untag_color + color_offset[f];
   };
   // Whether the quad row of fragments [first, first + 32) reads row_reads plus its offset:
   // every pair starts a pair template of row_keys, one offset per pixel row.
@@ -217,6 +219,15 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
   // Every read written is new: the last is the trace's last granule.
   last_granule = out[written - 1];
   return written;
+}
+
+int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                             const FragmentEdges& edges, int count, uint64_t active,
+                             uint64_t* out, uint64_t& last_granule) {
+  if (!planes.templates.usable) return -1;
+  return planes.templates.color_at_offset
+             ? trace_from_templates<true>(planes, taps, edges, count, active, out, last_granule)
+             : trace_from_templates<false>(planes, taps, edges, count, active, out, last_granule);
 }
 
 }  // namespace HWY_NAMESPACE
