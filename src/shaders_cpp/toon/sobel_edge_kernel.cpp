@@ -82,7 +82,10 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
   VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
     const VF uf = hn::LoadU(df, u + f), vf = hn::LoadU(df, v + f);
-    const hn::Mask<DI> on = lanes_of(di, active >> f);
+    // A vector of active lanes only (most of them) widens the box without masking.
+    const uint64_t lane_bits = n >= 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1;
+    const bool all_on = ((active >> f) & lane_bits) == lane_bits;
+    const hn::Mask<DI> on = all_on ? hn::FirstN(di, n) : lanes_of(di, active >> f);
     VI x[kTapsPerAxis], y[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
       x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, l.offset_u[a])), l.grid_width);
@@ -91,6 +94,11 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
       hn::Store(y[a], di, taps.y[a] + f);
     }
     const auto widen = [&](VI lo, VI hi, VI& box_min_x, VI& box_max_x) {
+      if (all_on) {
+        box_min_x = hn::Min(box_min_x, lo);
+        box_max_x = hn::Max(box_max_x, hi);
+        return;
+      }
       box_min_x = hn::Min(box_min_x, hn::IfThenElse(on, lo, hn::Set(di, INT32_MAX)));
       box_max_x = hn::Max(box_max_x, hn::IfThenElse(on, hi, hn::Set(di, INT32_MIN)));
     };

@@ -84,10 +84,16 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
     const VU right = hn::Sub(hn::ShiftRightSame(load(taps.x[2] + f), t.column_shift), centre);
     // Each 0 or 1 (a column left of the centre's granule by more, or right of it, wraps high).
     const auto columns_fit = hn::Eq(hn::And(hn::Or(left, right), not_bit0), hn::Zero(du));
-    misfit = hn::Or(misfit, hn::VecFromMask(du, hn::AndNot(hn::And(rows_fit, columns_fit),
-                                                           lanes_of(du, active >> f))));
-    const VU depth_edge = hn::IfThenElseZero(lanes_of(du, depth_edges >> f), depth_edge_class);
-    const VU cls = hn::Or(hn::Or(left, hn::ShiftLeft<1>(right)), depth_edge);
+    // Vectors of active lanes only and without depth edges (most) need no lane masks.
+    const uint64_t lane_bits = lanes >= 64 ? ~uint64_t{0} : (uint64_t{1} << lanes) - 1;
+    const auto fits = hn::And(rows_fit, columns_fit);
+    const bool all_on = ((active >> f) & lane_bits) == lane_bits;
+    misfit = hn::Or(misfit, hn::VecFromMask(du, all_on ? hn::Not(fits)
+                                                       : hn::AndNot(fits, lanes_of(du, active >> f))));
+    VU cls = hn::Or(left, hn::ShiftLeft<1>(right));
+    if (((depth_edges >> f) & lane_bits) != 0) {
+      cls = hn::Or(cls, hn::IfThenElseZero(lanes_of(du, depth_edges >> f), depth_edge_class));
+    }
     hn::Store(cls, du, read_class + f);
     const VU fragment_offset = hn::Add(hn::Mul(y1, row_granules), centre);
     store_wide(fragment_offset, offset + f);
