@@ -100,18 +100,21 @@ bool FindEdgeRowsKernel(const float* u, const float* v, int count, uint64_t acti
   alignas(64) int32_t nearest_of_pixel[kBatchFragments];
   uint64_t depth_edge_pixels = 0, edge_pixels = 0;
   for (size_t i = 0; i < static_cast<size_t>(kBatchFragments); i += n) {
+    // Tap k at a constant distance from the run's first tap in each array (one base register).
     const size_t first_cell = (i / kRowPixels) * kGridWidth + i % kRowPixels;
-    const auto cell = [first_cell](int k) {
-      return first_cell + static_cast<size_t>((k / kTapsPerAxis) * kGridWidth + k % kTapsPerAxis);
-    };
+    const float* const linear_z = grid.linear_z + first_cell;
+    const float* const depth = grid.depth + first_cell;
+    const float* const normal[3] = {grid.normal[0] + first_cell, grid.normal[1] + first_cell,
+                                    grid.normal[2] + first_cell};
+    const auto cell = [](int k) { return (k / kTapsPerAxis) * kGridWidth + k % kTapsPerAxis; };
     const VI fragment = hn::Load(di, kQuadOrder.fragment + i);
     hn::Mask<decltype(df)> depth_edge, edge;
     VI nearest;
     edge_lanes(
         df, hn::GatherIndex(df, u, fragment), hn::GatherIndex(df, v, fragment), test,
-        [&](int k) { return hn::LoadU(df, grid.linear_z + cell(k)); },
-        [&](int k) { return hn::LoadU(df, grid.depth + cell(k)); },
-        [&](int c, int k) { return hn::LoadU(df, grid.normal[c] + cell(k)); }, depth_edge, edge,
+        [&](int k) { return hn::LoadU(df, linear_z + cell(k)); },
+        [&](int k) { return hn::LoadU(df, depth + cell(k)); },
+        [&](int c, int k) { return hn::LoadU(df, normal[c] + cell(k)); }, depth_edge, edge,
         nearest);
     hn::Store(nearest, di, nearest_of_pixel + i);
     depth_edge_pixels |= mask_bits(df, depth_edge) << i;
