@@ -213,6 +213,59 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
   EXPECT_GT(taken, batches / 6);  // most interior batches (a quarter), off the top and bottom rows
 }
 
+// trace_regular_batch (quad rows from the row template) against the 64-bit kernel on whole
+// full-screen batches inside the texture (the batches find_edges_rows takes), granule-aligned or
+// not, with and without edges, on every SIMD target.
+TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
+  std::mt19937 rng(1414);
+  const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  int batches = 0;
+  for (int config = 0; config < 24; ++config) {
+    const int w = 48 + 16 * pick(6), h = 12 + pick(30);
+    BatchTracePlanes planes;
+    planes.depth = plane(3, 4096 * pick(3), 4, w, h);
+    planes.has_normal = config % 4 != 0;
+    planes.normal = plane(4, 64 * pick(20), 4, w, h);
+    planes.color = config % 5 == 4 ? plane(5, 4 * pick(20), 8, w, h) : plane(5, 64 * pick(4), 4, w, h);
+    planes.has_border = config % 3 != 0;
+    planes.border = plane(6, 4 * pick(5), 4, w, h);
+    planes.prepare_tags();
+    ASSERT_TRUE(planes.templates.usable) << "config " << config;
+    for (int b = 0; b < 24; ++b) {
+      force_simd_target(targets[(config + b) % targets.size()]);
+      // Inside the texture (taps unclamped), every other batch on a granule.
+      const int x0 = (1 + pick(w - 18)) & (pick(2) ? ~15 : ~0);
+      const int y0 = 1 + pick(h - 5);
+      FragmentTaps taps;
+      fill_taps(rng, x0 == 0 ? 16 : x0, y0, 1, false, w, h, w, h, taps);
+      FragmentEdges edges;
+      const int edge_odds = b % 3 == 0 ? 40 : (b % 3 == 1 ? 300 : 6);
+      for (int f = 0; f < kBatchFragments; ++f) {
+        const bool depth_edge = pick(edge_odds) == 0;
+        const bool edge = depth_edge || pick(edge_odds) == 0;
+        edges.depth_edge |= uint64_t{depth_edge} << f;
+        edges.edge |= uint64_t{edge} << f;
+        edges.nearest_tap[f] = pick(kTaps);
+      }
+      const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+      std::vector<uint64_t> expected(room), got(room);
+      uint64_t last_expected = pick(2) ? rng() : (planes.depth.origin + 4096) >> 6;
+      uint64_t last_got = last_expected;
+      const int n_expected = trace_batch_64(planes, taps, edges, kBatchFragments, ~uint64_t{0},
+                                            expected.data(), last_expected);
+      const int n_got = trace_regular_batch(planes, taps, edges, got.data(), last_got);
+      expected.resize(n_expected);
+      got.resize(n_got);
+      ASSERT_EQ(got, expected) << "config " << config << " batch " << b;
+      ASSERT_EQ(last_got, last_expected) << "config " << config << " batch " << b;
+      ++batches;
+    }
+  }
+  EXPECT_EQ(batches, 24 * 24);
+}
+
 // Unaligned depth or normal planes, one texture as two planes, or differing texel sizes leave
 // the templates unused.
 TEST(SobelTraceKernel, TemplatesNeedAlignedDistinctPlanes) {

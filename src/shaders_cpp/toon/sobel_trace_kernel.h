@@ -151,5 +151,12 @@ int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
 int trace_batch_template(const BatchTracePlanes& planes, const FragmentTaps& taps,
                          const FragmentEdges& edges, int count, uint64_t active,
                          uint64_t* granules, uint64_t& last_granule);
+// trace_batch for a whole batch that find_edges_rows took (every fragment active, 16x4 pixels
+// in quad order, taps each pixel's neighbours): a quad row that starts on a granule, samples the
+// colour at its centres and has no depth edge or border read is written from the row template
+// (TraceTemplates::rows) at its offset, with no per-fragment pass; other quad rows as
+// trace_batch writes them.
+int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                        const FragmentEdges& edges, uint64_t* granules, uint64_t& last_granule);
 
 }  // namespace ontile::sobel

@@ -236,6 +236,31 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
              : trace_from_templates<false>(planes, taps, edges, count, active, out, last_granule);
 }
 
+// Writes TraceTemplates::row_reads plus offset at out (vectors: up to 7 entries past the
+// reads).
+void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
+  const DW dw;
+  const size_t wide = hn::Lanes(dw);
+  const auto add = hn::Set(dw, offset);
+  // Blocks of 8 (row_reads is padded to them), a fixed number of vectors each.
+  for (int at = 0; at < t.row_count; at += 8) {
+    for (size_t i = 0; i < 8; i += wide) {
+      hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
+    }
+  }
+}
+
+// Whether every fragment of [first, first + 32) samples the colour at its centre tap.
+bool ColorAtCentresKernel(const FragmentTaps& taps, int first) {
+  const hn::ScalableTag<int32_t> di;
+  auto same = hn::Eq(hn::Zero(di), hn::Zero(di));
+  for (int f = first; f < first + 32; f += static_cast<int>(hn::Lanes(di))) {
+    same = hn::And(same, hn::And(hn::Eq(hn::Load(di, taps.color_x + f), hn::Load(di, taps.x[1] + f)),
+                                 hn::Eq(hn::Load(di, taps.color_y + f), hn::Load(di, taps.y[1] + f))));
+  }
+  return hn::AllTrue(di, same);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile::sobel
 HWY_AFTER_NAMESPACE();
@@ -244,6 +269,8 @@ HWY_AFTER_NAMESPACE();
 namespace ontile::sobel {
 
 HWY_EXPORT(TraceBatchTemplateKernel);
+HWY_EXPORT(WriteRowKernel);
+HWY_EXPORT(ColorAtCentresKernel);
 
 void BatchTracePlanes::prepare_templates() {
   templates.usable = false;
@@ -328,6 +355,37 @@ void BatchTracePlanes::prepare_templates() {
     for (int i = n; i < TraceTemplates::kRowReads; ++i) t.row_reads[i] = 0;
   }
   t.usable = true;
+}
+
+int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                        const FragmentEdges& edges, uint64_t* granules, uint64_t& last_granule) {
+  const TraceTemplates& t = planes.templates;
+  constexpr int kQuadRowFragments = 4 * TraceTemplates::kRowQuads;
+  constexpr int kGranuleTexels = 16;  // rows: 4-byte texels
+  const int x = taps.x[1][0], y = taps.y[1][0];
+  if (!t.usable || !t.rows || x % kGranuleTexels != 0) {
+    return trace_batch(planes, taps, edges, kBatchFragments, ~uint64_t{0}, granules, last_granule);
+  }
+  // Fragments whose reads differ from their class without edges.
+  const uint64_t edge_reads = (planes.has_normal ? edges.depth_edge : 0) |
+                              (planes.has_border ? edges.edge : 0);
+  int written = 0;
+  for (int first = 0; first < kBatchFragments; first += kQuadRowFragments) {
+    const uint64_t quad_row = ((uint64_t{1} << kQuadRowFragments) - 1) << first;
+    // Pixel rows y + first / 16 and the next; the first pixel's centre granule column.
+    const uint64_t offset = static_cast<uint64_t>(y + first / 16) * t.row_granules +
+                            static_cast<uint64_t>(x / kGranuleTexels);
+    if ((edge_reads & quad_row) == 0 && t.row_reads[0] + offset != last_granule &&
+        HWY_DYNAMIC_DISPATCH(ColorAtCentresKernel)(taps, first)) {
+      HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, granules + written);
+      written += t.row_count;
+      last_granule = granules[written - 1];
+      continue;
+    }
+    written += trace_batch(planes, taps, edges, kBatchFragments, quad_row, granules + written,
+                           last_granule);
+  }
+  return written;
 }
 
 int trace_batch_template(const BatchTracePlanes& planes, const FragmentTaps& taps,
