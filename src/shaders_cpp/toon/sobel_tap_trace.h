@@ -80,8 +80,9 @@ class TapTrace {
              int fragment_count, uint64_t active, bool regular) {
     if (!sink_) return;
     uint64_t* const out = granules_.data() + count_;
-    count_ += regular ? trace_regular_batch(planes, taps, edges, out, last_granule_)
-                      : trace_batch(planes, taps, edges, fragment_count, active, out, last_granule_);
+    count_ += regular && planes.templates.rows
+                  ? trace_regular_batch(planes, taps, edges, out, last_granule_)
+                  : trace_batch(planes, taps, edges, fragment_count, active, out, last_granule_);
   }
   // The border read of a fragment on an edge, at its nearest tap's texel.
   void border(int x, int y) {
