@@ -4,6 +4,7 @@
 // partial masks, one texture bound as two planes, on every SIMD target.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -116,6 +117,179 @@ TEST(SobelTraceKernel, ThirtyTwoBitLanesRecordTheSixtyFourBitKernelsGranules) {
   EXPECT_EQ(batches, 96 * 24);
   EXPECT_GT(granules, batches * 64 * 4);
   EXPECT_GT(dropped_firsts, 10);
+}
+
+// The template kernel on planes that allow it (granule-aligned depth and normal planes whose
+// rows are whole granules) against the 64-bit kernel: the same granules, count and last granule
+// where it takes a batch, and trace_batch (which tries it first) the same on every batch.
+TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
+  std::mt19937 rng(1411);
+  const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  const uint64_t texel_sizes[] = {4, 4, 8, 16, 2};
+  int taken = 0, batches = 0, pair_configs = 0, own_color_configs = 0;
+  for (int config = 0; config < 60; ++config) {
+    const uint64_t texel_bytes = texel_sizes[pick(5)];
+    const int granule_texels = static_cast<int>(64 / texel_bytes);
+    const int w = std::max(16, granule_texels) + granule_texels * pick(96 / granule_texels + 1);
+    const int h = 8 + pick(40);
+    const int color_w = config % 5 == 4 ? 7 + pick(30) : w;
+    const int color_h = config % 5 == 4 ? 5 + pick(20) : h;
+    BatchTracePlanes planes;
+    planes.depth = plane(3, 4096 * pick(3), texel_bytes, w, h);
+    planes.has_normal = config % 4 != 0;
+    planes.normal = plane(4, 64 * pick(20), texel_bytes, w, h);
+    // Every other config a colour plane laid out as depth (quad-row pairs from pair templates),
+    // every fourth one starting on a granule with another texel size (pairs with their own
+    // colour offset where its rows are whole granules).
+    planes.color = config % 2 == 0   ? plane(5, 64 * pick(4), texel_bytes, color_w, color_h)
+                   : config % 4 == 1 ? plane(5, 64 * pick(4), texel_sizes[1 + pick(3)], color_w, color_h)
+                                     : plane(5, 4 * pick(20), texel_sizes[pick(5)], color_w, color_h);
+    planes.has_border = config % 3 != 0;
+    planes.border = config % 9 == 8 ? planes.normal : plane(6, 4 * pick(5), 4, w, h);
+    if (config % 11 == 10 && color_w == w && color_h == h) planes.border = planes.color;
+    planes.prepare_tags();
+    ASSERT_TRUE(planes.templates.usable) << "config " << config;
+    pair_configs += planes.templates.pairs;
+    own_color_configs += planes.templates.pairs && !planes.templates.color_at_offset;
+    for (int b = 0; b < 24; ++b) {
+      force_simd_target(targets[(config + b) % targets.size()]);
+      const int kind = b % 4;  // interior, corner (clamped), thick taps, scattered
+      const int step = kind == 2 ? 2 + pick(3) : 1;
+      // Half the others start on a 16-texel column: granule-aligned quad rows.
+      const int x0 = kind == 1 ? (pick(2) ? 0 : w - 16) : pick(w - 15) & (pick(2) ? ~15 : ~0);
+      const int y0 = kind == 1 ? (pick(2) ? 0 : h - 4) : pick(h - 3);
+      FragmentTaps taps;
+      fill_taps(rng, x0, y0, step, kind == 3, w, h, color_w, color_h, taps);
+      FragmentEdges edges;
+      const int edge_odds = b % 3 == 0 ? 2 : 12;
+      for (int f = 0; f < kBatchFragments; ++f) {
+        const bool depth_edge = pick(edge_odds) == 0;
+        const bool edge = depth_edge || pick(edge_odds) == 0;
+        edges.depth_edge |= uint64_t{depth_edge} << f;
+        edges.edge |= uint64_t{edge} << f;
+        edges.nearest_tap[f] = pick(kTaps);
+      }
+      const int count = b % 6 == 5 ? 16 * (1 + pick(4)) : kBatchFragments;
+      const uint64_t in_count = count == 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
+      const uint64_t active =
+          (b % 5 == 4 ? rng() | (uint64_t{rng()} << 32) : ~uint64_t{0}) & in_count;
+      const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+      std::vector<uint64_t> expected(room), got(room), dispatched(room);
+      // The trace before: a random granule, or the first read's (the template kernel declines).
+      uint64_t last_expected = pick(2) ? rng() : (planes.depth.origin + 4096) >> 6;
+      if (pick(8) == 0) {
+        last_expected = (planes.depth.origin + (uint64_t{static_cast<uint32_t>(taps.y[0][0])} * w +
+                                                static_cast<uint32_t>(taps.x[0][0])) *
+                                                   planes.depth.texel_bytes) >> 6;
+      }
+      uint64_t last_got = last_expected, last_dispatched = last_expected;
+      const uint64_t last_before = last_expected;
+      const int n_expected = trace_batch_64(planes, taps, edges, count, active, expected.data(),
+                                            last_expected);
+      expected.resize(n_expected);
+      const int n_got =
+          trace_batch_template(planes, taps, edges, count, active, got.data(), last_got);
+      if (n_got >= 0) {
+        ++taken;
+        got.resize(n_got);
+        ASSERT_EQ(got, expected) << "config " << config << " batch " << b;
+        ASSERT_EQ(last_got, last_expected) << "config " << config << " batch " << b;
+      } else {
+        ASSERT_EQ(last_got, last_before) << "config " << config << " batch " << b;
+      }
+      const int n_dispatched =
+          trace_batch(planes, taps, edges, count, active, dispatched.data(), last_dispatched);
+      dispatched.resize(n_dispatched);
+      ASSERT_EQ(dispatched, expected) << "config " << config << " batch " << b;
+      ASSERT_EQ(last_dispatched, last_expected) << "config " << config << " batch " << b;
+      ++batches;
+    }
+  }
+  EXPECT_EQ(batches, 60 * 24);
+  EXPECT_GT(pair_configs, 20);
+  EXPECT_GT(own_color_configs, 5);
+  EXPECT_GT(taken, batches / 6);  // most interior batches (a quarter), off the top and bottom rows
+}
+
+// trace_regular_batch (quad rows from the row template) against the 64-bit kernel on whole
+// full-screen batches inside the texture (the batches find_edges_rows takes), granule-aligned or
+// not, with and without edges, on every SIMD target.
+TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
+  std::mt19937 rng(1414);
+  const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  int batches = 0;
+  for (int config = 0; config < 24; ++config) {
+    const int w = 48 + 16 * pick(6), h = 12 + pick(30);
+    BatchTracePlanes planes;
+    planes.depth = plane(3, 4096 * pick(3), 4, w, h);
+    planes.has_normal = config % 4 != 0;
+    planes.normal = plane(4, 64 * pick(20), 4, w, h);
+    planes.color = config % 5 == 4 ? plane(5, 4 * pick(20), 8, w, h) : plane(5, 64 * pick(4), 4, w, h);
+    planes.has_border = config % 3 != 0;
+    planes.border = plane(6, 4 * pick(5), 4, w, h);
+    planes.prepare_tags();
+    ASSERT_TRUE(planes.templates.usable) << "config " << config;
+    for (int b = 0; b < 24; ++b) {
+      force_simd_target(targets[(config + b) % targets.size()]);
+      // Inside the texture (taps unclamped), every other batch on a granule.
+      const int x0 = (1 + pick(w - 18)) & (pick(2) ? ~15 : ~0);
+      const int y0 = 1 + pick(h - 5);
+      FragmentTaps taps;
+      fill_taps(rng, x0 == 0 ? 16 : x0, y0, 1, false, w, h, w, h, taps);
+      FragmentEdges edges;
+      const int edge_odds = b % 3 == 0 ? 40 : (b % 3 == 1 ? 300 : 6);
+      for (int f = 0; f < kBatchFragments; ++f) {
+        const bool depth_edge = pick(edge_odds) == 0;
+        const bool edge = depth_edge || pick(edge_odds) == 0;
+        edges.depth_edge |= uint64_t{depth_edge} << f;
+        edges.edge |= uint64_t{edge} << f;
+        edges.nearest_tap[f] = pick(kTaps);
+      }
+      const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+      std::vector<uint64_t> expected(room), got(room);
+      uint64_t last_expected = pick(2) ? rng() : (planes.depth.origin + 4096) >> 6;
+      uint64_t last_got = last_expected;
+      const int n_expected = trace_batch_64(planes, taps, edges, kBatchFragments, ~uint64_t{0},
+                                            expected.data(), last_expected);
+      const int n_got = trace_regular_batch(planes, taps, edges, got.data(), last_got);
+      expected.resize(n_expected);
+      got.resize(n_got);
+      ASSERT_EQ(got, expected) << "config " << config << " batch " << b;
+      ASSERT_EQ(last_got, last_expected) << "config " << config << " batch " << b;
+      ++batches;
+    }
+  }
+  EXPECT_EQ(batches, 24 * 24);
+}
+
+// Unaligned depth or normal planes, one texture as two planes, or differing texel sizes leave
+// the templates unused.
+TEST(SobelTraceKernel, TemplatesNeedAlignedDistinctPlanes) {
+  BatchTracePlanes planes;
+  planes.depth = plane(3, 0, 4, 64, 64);
+  planes.has_normal = true;
+  planes.normal = plane(4, 0, 4, 64, 64);
+  planes.color = plane(5, 4, 4, 64, 64);
+  planes.prepare_tags();
+  EXPECT_TRUE(planes.templates.usable);
+  planes.depth = plane(3, 4, 4, 64, 64);  // not on a granule
+  planes.prepare_tags();
+  EXPECT_FALSE(planes.templates.usable);
+  planes.depth = plane(3, 0, 4, 60, 64);  // rows of 240 bytes
+  planes.normal = plane(4, 0, 4, 60, 64);
+  planes.prepare_tags();
+  EXPECT_FALSE(planes.templates.usable);
+  planes.depth = plane(3, 0, 4, 64, 64);
+  planes.normal = plane(4, 0, 8, 64, 64);  // other texel size
+  planes.prepare_tags();
+  EXPECT_FALSE(planes.templates.usable);
+  planes.normal = planes.depth;  // one texture
+  planes.prepare_tags();
+  EXPECT_FALSE(planes.templates.usable);
 }
 
 // Planes whose tags cannot be told apart (overlapping at different origins, one origin with

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include "raster/lane_bits-inl.h"
+#include "shaders_cpp/toon/sobel_edge_math-inl.h"
 
 #include <climits>
 #include <cmath>
@@ -72,11 +73,19 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
     return std::fabs(o[0]) < kSmall && std::fabs(o[2]) < kSmall && o[0] <= o[1] && o[1] <= o[2];
   };
   const bool outer_taps_bound = ordered(l.offset_u) && ordered(l.offset_v);
+  // The centre taps sit at uv + (+-0): u + 0 is u (or +0 for u = -0, the same texel 0), so
+  // where the colour texture has the grid's size its texel is the centre tap's.
+  const bool color_is_centre = l.color_width == l.grid_width &&
+                               l.color_height == l.grid_height && l.offset_u[1] == 0.0f &&
+                               l.offset_v[1] == 0.0f;
   VI min_x = hn::Set(di, INT32_MAX), min_y = min_x;
   VI max_x = hn::Set(di, INT32_MIN), max_y = max_x;
   for (size_t f = 0; f < static_cast<size_t>(count); f += n) {
     const VF uf = hn::LoadU(df, u + f), vf = hn::LoadU(df, v + f);
-    const hn::Mask<DI> on = lanes_of(di, active >> f);
+    // A vector of active lanes only (most of them) widens the box without masking.
+    const uint64_t lane_bits = n >= 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1;
+    const bool all_on = ((active >> f) & lane_bits) == lane_bits;
+    const hn::Mask<DI> on = all_on ? hn::FirstN(di, n) : lanes_of(di, active >> f);
     VI x[kTapsPerAxis], y[kTapsPerAxis];
     for (int a = 0; a < kTapsPerAxis; ++a) {
       x[a] = nearest_clamped_texel(df, hn::Add(uf, hn::Set(df, l.offset_u[a])), l.grid_width);
@@ -85,6 +94,11 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
       hn::Store(y[a], di, taps.y[a] + f);
     }
     const auto widen = [&](VI lo, VI hi, VI& box_min_x, VI& box_max_x) {
+      if (all_on) {
+        box_min_x = hn::Min(box_min_x, lo);
+        box_max_x = hn::Max(box_max_x, hi);
+        return;
+      }
       box_min_x = hn::Min(box_min_x, hn::IfThenElse(on, lo, hn::Set(di, INT32_MAX)));
       box_max_x = hn::Max(box_max_x, hn::IfThenElse(on, hi, hn::Set(di, INT32_MIN)));
     };
@@ -96,6 +110,11 @@ void TapTexelsKernel(const float* u, const float* v, int count, uint64_t active,
         widen(x[a], x[a], min_x, max_x);
         widen(y[a], y[a], min_y, max_y);
       }
+    }
+    if (color_is_centre) {
+      hn::Store(x[1], di, taps.color_x + f);
+      hn::Store(y[1], di, taps.color_y + f);
+      continue;
     }
     const VI color_x = nearest_clamped_texel(df, uf, l.color_width);
     const VI color_y = nearest_clamped_texel(df, vf, l.color_height);
@@ -262,20 +281,6 @@ void DecodeGridKernel(const Texture2D::TexelView& depth, const Texture2D::TexelV
   }
 }
 
-// The Sobel kernels on tap values t[k] (sobel_magnitude): ((r0 + r2) + 2 r1) of differences.
-HWY_INLINE VF sobel_x(DF df, const VF t[kTaps]) {
-  return hn::Add(hn::Add(hn::Sub(t[2], t[0]), hn::Sub(t[8], t[6])),
-                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[5], t[3])));
-}
-HWY_INLINE VF sobel_y(DF df, const VF t[kTaps]) {
-  return hn::Add(hn::Add(hn::Sub(t[6], t[0]), hn::Sub(t[8], t[2])),
-                 hn::Mul(hn::Set(df, 2.0f), hn::Sub(t[7], t[1])));
-}
-// glm::dot of two 3-vectors: (x * x' + y * y') + z * z'.
-HWY_INLINE VF dot3(VF ax, VF ay, VF az, VF bx, VF by, VF bz) {
-  return hn::Add(hn::Add(hn::Mul(ax, bx), hn::Mul(ay, by)), hn::Mul(az, bz));
-}
-
 void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTaps& taps,
                      const NeighbourhoodGrid& grid, const EdgeTest& test, FragmentEdges& edges) {
   const DF df;
@@ -294,61 +299,17 @@ void FindEdgesKernel(const float* u, const float* v, int count, const FragmentTa
           hn::Mul(hn::Sub(hn::Min(hn::Max(hn::Load(di, taps.y[a] + f), y0), y1), y0), width);
     }
     VI cell[kTaps];
-    VF z[kTaps];
     for (int k = 0; k < kTaps; ++k) {
       cell[k] = hn::Add(row_start[k / kTapsPerAxis], column[k % kTapsPerAxis]);
-      z[k] = hn::GatherIndex(df, grid.linear_z, cell[k]);
     }
-    VF depth_limit = hn::Mul(hn::Set(df, test.depth_limit_scale), z[kCentreTap]);
-    if (test.has_normal) {
-      // grazing_cosine: the view ray through the pixel against the centre's normal.
-      const VF nx = hn::GatherIndex(df, grid.normal[0], cell[kCentreTap]);
-      const VF ny = hn::GatherIndex(df, grid.normal[1], cell[kCentreTap]);
-      const VF nz = hn::GatherIndex(df, grid.normal[2], cell[kCentreTap]);
-      const VF one = hn::Set(df, 1.0f), two = hn::Set(df, 2.0f), minus_one = hn::Set(df, -1.0f);
-      const VF rx = hn::Mul(hn::Set(df, test.view_ray_scale.x),
-                            hn::Sub(hn::Mul(two, hn::LoadU(df, u + f)), one));
-      const VF ry = hn::Mul(hn::Set(df, test.view_ray_scale.y),
-                            hn::Sub(one, hn::Mul(two, hn::LoadU(df, v + f))));
-      const VF normal_len = hn::Sqrt(dot3(nx, ny, nz, nx, ny, nz));
-      const VF ray_len = hn::Sqrt(dot3(rx, ry, minus_one, rx, ry, minus_one));
-      const VF cosine =
-          hn::Div(hn::Abs(dot3(nx, ny, nz, rx, ry, minus_one)), hn::Mul(normal_len, ray_len));
-      const VF min_cosine = hn::Set(df, test.min_grazing_cosine);
-      VF grazing = hn::IfThenElse(hn::Gt(cosine, min_cosine), cosine, min_cosine);
-      grazing = hn::IfThenElse(hn::Gt(normal_len, hn::Zero(df)), grazing, min_cosine);
-      depth_limit = hn::Div(depth_limit, grazing);
-    }
-    const VF gx = sobel_x(df, z), gy = sobel_y(df, z);
-    const hn::Mask<DF> depth_edge =
-        hn::Gt(hn::Sqrt(hn::Add(hn::Mul(gx, gx), hn::Mul(gy, gy))), depth_limit);
-    hn::Mask<DF> edge = depth_edge;
-    if (test.has_normal && !hn::AllTrue(df, depth_edge)) {
-      // sobel_vector_magnitude where depth found no edge.
-      VF gxs[3], gys[3];
-      for (int c = 0; c < 3; ++c) {
-        VF t[kTaps];
-        for (int k = 0; k < kTaps; ++k) t[k] = hn::GatherIndex(df, grid.normal[c], cell[k]);
-        gxs[c] = sobel_x(df, t);
-        gys[c] = sobel_y(df, t);
-      }
-      const VF magnitude = hn::Sqrt(hn::Add(dot3(gxs[0], gxs[1], gxs[2], gxs[0], gxs[1], gxs[2]),
-                                            dot3(gys[0], gys[1], gys[2], gys[0], gys[1], gys[2])));
-      edge = hn::Or(edge, hn::Gt(magnitude, hn::Set(df, test.normal_threshold)));
-    }
-    // The first tap of the smallest stored depth, the centre keeping ties: only an edge reads
-    // it (the border colour), so vectors without one skip its gathers.
-    VI nearest = hn::Set(di, kCentreTap);
-    if (!hn::AllFalse(df, edge)) {
-      VF nearest_depth = hn::GatherIndex(df, grid.depth, cell[kCentreTap]);
-      for (int k = 0; k < kTaps; ++k) {
-        if (k == kCentreTap) continue;
-        const VF d = hn::GatherIndex(df, grid.depth, cell[k]);
-        const hn::Mask<DF> closer = hn::Lt(d, nearest_depth);
-        nearest_depth = hn::IfThenElse(closer, d, nearest_depth);
-        nearest = hn::IfThenElse(hn::RebindMask(di, closer), hn::Set(di, k), nearest);
-      }
-    }
+    hn::Mask<DF> depth_edge, edge;
+    VI nearest;
+    edge_lanes(
+        df, hn::LoadU(df, u + f), hn::LoadU(df, v + f), test,
+        [&](int k) { return hn::GatherIndex(df, grid.linear_z, cell[k]); },
+        [&](int k) { return hn::GatherIndex(df, grid.depth, cell[k]); },
+        [&](int c, int k) { return hn::GatherIndex(df, grid.normal[c], cell[k]); }, depth_edge,
+        edge, nearest);
     hn::Store(nearest, di, edges.nearest_tap + f);
     edges.depth_edge |= mask_bits(df, depth_edge) << f;
     edges.edge |= mask_bits(df, edge) << f;

@@ -89,4 +89,12 @@ struct FragmentEdges {
 void find_edges(const float* u, const float* v, int count, const FragmentTaps& taps,
                 const NeighbourhoodGrid& grid, const EdgeTest& test, FragmentEdges& edges);
 
+// find_edges for a whole batch (count kBatchFragments, every fragment active) of 16x4 pixels
+// in quad order whose taps are each pixel's neighbours in a grid of 18x6 texels (a full-screen
+// batch inside the texture): the same results, with pixel rows on the lanes (taps loaded, not
+// gathered). Returns false, doing nothing, for any other batch.
+bool find_edges_rows(const float* u, const float* v, int count, uint64_t active,
+                     const FragmentTaps& taps, const NeighbourhoodGrid& grid,
+                     const EdgeTest& test, FragmentEdges& edges);
+
 }  // namespace ontile::sobel

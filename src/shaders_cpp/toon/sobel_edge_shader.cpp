@@ -240,9 +240,12 @@ bool SobelEdgeShader::shade_fragments(const float* u, const float* v, int count,
   sobel::decode_grid(depth_, p_.normal ? &normal_ : nullptr, p_.normal_encoding, depth_decode_,
                      grid);
   sobel::FragmentEdges edges;
-  sobel::find_edges(u, v, count, taps, grid, edge_test_, edges);
+  const bool regular = sobel::find_edges_rows(u, v, count, active, taps, grid, edge_test_, edges);
+  if (!regular) {
+    sobel::find_edges(u, v, count, taps, grid, edge_test_, edges);
+  }
   if (batch_lanes_) {
-    trace.batch(trace_planes_, taps, edges, count, active);
+    trace.batch(trace_planes_, taps, edges, count, active, regular);
     load_texels(color_, taps.color_x, taps.color_y, count, active, colour);
     for (uint64_t rest = active & edges.edge; rest != 0; rest &= rest - 1) {
       const int f = std::countr_zero(rest);

@@ -75,11 +75,14 @@ class TapTrace {
   }
   // The reads of a whole batch's fragments whose bit is set in active, borders included, in
   // the order fragment() and border() would record them (trace_batch, on SIMD lanes).
+  // regular: a whole batch that find_edges_rows took (trace_regular_batch).
   void batch(const BatchTracePlanes& planes, const FragmentTaps& taps, const FragmentEdges& edges,
-             int fragment_count, uint64_t active) {
+             int fragment_count, uint64_t active, bool regular) {
     if (!sink_) return;
-    count_ += trace_batch(planes, taps, edges, fragment_count, active, granules_.data() + count_,
-                          last_granule_);
+    uint64_t* const out = granules_.data() + count_;
+    count_ += regular && planes.templates.rows
+                  ? trace_regular_batch(planes, taps, edges, out, last_granule_)
+                  : trace_batch(planes, taps, edges, fragment_count, active, out, last_granule_);
   }
   // The border read of a fragment on an edge, at its nearest tap's texel.
   void border(int x, int y) {
@@ -116,7 +119,7 @@ class TapTrace {
   std::vector<uint64_t>* sink_;  // the thread's trace when the TapTrace was made, or null
   uint64_t last_granule_;        // the trace's last granule, carried across the batch
   int count_ = 0;
-  std::array<uint64_t, kBatchFragments * kMaxReadsPerFragment> granules_;
+  std::array<uint64_t, kBatchFragments * kMaxReadsPerFragment + kTraceSlack> granules_;
 };
 
 }  // namespace ontile::sobel

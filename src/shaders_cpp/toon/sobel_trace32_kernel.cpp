@@ -286,6 +286,7 @@ void BatchTracePlanes::prepare_tags() {
   const TracePlane* const plane[kPlanes] = {&depth, has_normal ? &normal : nullptr, &color,
                                             has_border ? &border : nullptr};
   tags_fit = false;
+  templates.usable = false;
   uint32_t next_tag = 0;
   for (int p = 0; p < kPlanes; ++p) {
     if (!plane[p]) continue;
@@ -323,6 +324,7 @@ void BatchTracePlanes::prepare_tags() {
     }
   }
   tags_fit = true;
+  prepare_templates();
 }
 
 int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,

@@ -150,6 +150,11 @@ bool BatchTracePlanes::fits_lanes(const Texture2D::TexelView& depth,
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule) {
+  if (planes.templates.usable) {
+    const int written =
+        trace_batch_template(planes, taps, edges, count, active, granules, last_granule);
+    if (written >= 0) return written;
+  }
   if (planes.tags_fit) {
     return trace_batch_32(planes, taps, edges, count, active, granules, last_granule);
   }

@@ -47,6 +47,58 @@ inline constexpr uint32_t kReadPatternSlots[kReadPatterns] = {
     slot_bits({3, 6, 9, 18}),
     slot_bits({3, 6, 9, 18, 19})};
 
+// Room a trace_batch output needs beyond count * kTraceSlots: the vector stores of the
+// template kernel and the pattern gathers may write up to this many entries past the last read.
+constexpr int kTraceSlack = 8;
+
+// Read classes of the template kernel (trace_batch_template): bit 0, the left tap column lies
+// in the granule before the centre's; bit 1, the right one in the granule after; bit 2, a depth
+// edge (no normal taps besides the centre).
+constexpr int kTemplateClasses = 8;
+constexpr int kTemplateReads = 24;  // the most reads of a class (18), padded for vector stores
+
+// For depth and normal planes that start on a granule, whose rows are whole granules and
+// whose texels tile a granule (one texel size): the granule of texel (x, y) is origin / 64 +
+// y * row_granules + (x >> column_shift), so a fragment whose tap rows are y - 1, y, y + 1 and
+// whose tap columns lie in the centre's granule or its neighbours reads, up to its colour
+// sample, the granules of its class's template plus y * row_granules + (x >> column_shift).
+struct TraceTemplates {
+  bool usable = false;  // set by BatchTracePlanes::prepare_tags
+  int column_shift = 0;
+  uint32_t row_granules = 0;
+  // The kept reads of each class (repeats dropped) less the fragment's offset: the planes'
+  // origin / 64 + dy * row_granules + dx, modulo 2^64.
+  alignas(64) uint64_t reads[kTemplateClasses][kTemplateReads] = {};
+  int read_count[kTemplateClasses] = {};
+  // Where the colour plane lies as the depth plane does (granule-aligned, one texel size and
+  // width), a fragment sampling the colour at its centre texel reads the colour granule at
+  // its offset too, and the two fragments of a quad row (one offset) read, with no border
+  // read, the pair template of their classes (class 0 + 8 * class 1): both fragments' reads.
+  bool pairs = false;
+  static constexpr int kPairReads = 40;  // 2 * (18 + 1), a multiple of 8
+  alignas(64) uint64_t pair_reads[kTemplateClasses * kTemplateClasses][kPairReads] = {};
+  int pair_count[kTemplateClasses * kTemplateClasses] = {};
+  // Pairs also where the colour plane starts on a granule and its rows are whole granules but
+  // its texels or rows differ from depth's (color_at_offset false): a fragment's colour read
+  // is then the colour plane's origin / 64 plus its own colour offset, cy * color_row_granules
+  // + (cx >> color_column_shift) (the two fragments of a pair share it), written over the
+  // pair template's colour reads, at pair_first_color and the pair's last read.
+  bool color_at_offset = false;
+  int color_column_shift = 0;
+  uint32_t color_row_granules = 0;
+  int pair_first_color[kTemplateClasses * kTemplateClasses] = {};
+  // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
+  // granule and has no edge reads its quads' pairs in the classes of such a row: the left
+  // column of its first pixel and the right column of its last in the neighbouring granules.
+  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset.
+  bool rows = false;
+  static constexpr int kRowQuads = 8;
+  static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
+  uint32_t row_keys[kRowQuads] = {};
+  alignas(64) uint64_t row_reads[kRowReads] = {};
+  int row_count = 0;
+};
+
 // The planes a batch reads. Depth, normal and border share the depth grid's size.
 struct BatchTracePlanes {
   TracePlane depth, normal, color, border;
@@ -63,7 +115,11 @@ struct BatchTracePlanes {
   uint64_t slot_untag[kTraceSlots] = {};
   // The same per read pattern, for each of its reads (the first, then its kept slots in order).
   alignas(64) uint64_t pattern_untag[kReadPatterns][kMaxPatternReads] = {};
-  void prepare_tags();
+  // The template kernel's tables where the planes allow it (tags_fit, depth, normal and colour
+  // with different tags, depth and normal aligned as TraceTemplates says).
+  TraceTemplates templates;
+  void prepare_tags();  // also prepares templates (prepare_templates)
+  void prepare_templates();
   // The lane kernels index texels (and float channels) with 32-bit integers: every plane must
   // hold fewer than 2^29 texels (callers fall back to TapTrace::fragment otherwise).
   static bool fits_lanes(const Texture2D::TexelView& depth, const Texture2D::TexelView& color);
@@ -76,7 +132,7 @@ struct BatchTracePlanes {
 // depth found no edge, the colour at (color_x, color_y), the border at the nearest tap where
 // there is an edge (with a border plane), each skipped when equal to the granule before it
 // (`last_granule` before the first; updated). Returns how many granules it wrote to
-// `granules` (room for count * kTraceSlots).
+// `granules` (room for count * kTraceSlots + kTraceSlack).
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule);
@@ -88,5 +144,19 @@ int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
 int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
                    const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                    uint64_t& last_granule);
+// The same granules from the class templates (TraceTemplates) for batches whose active
+// fragments all fit them (tap rows y - 1, y, y + 1, tap columns within a granule of the
+// centre's) and whose first read is new; returns -1, writing nothing of use and leaving
+// last_granule, for any other batch or planes without usable templates.
+int trace_batch_template(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                         const FragmentEdges& edges, int count, uint64_t active,
+                         uint64_t* granules, uint64_t& last_granule);
+// trace_batch for a whole batch that find_edges_rows took (every fragment active, 16x4 pixels
+// in quad order, taps each pixel's neighbours): a quad row that starts on a granule, samples the
+// colour at its centres and has no depth edge or border read is written from the row template
+// (TraceTemplates::rows) at its offset, with no per-fragment pass; other quad rows as
+// trace_batch writes them.
+int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
+                        const FragmentEdges& edges, uint64_t* granules, uint64_t& last_granule);
 
 }  // namespace ontile::sobel
