@@ -6,6 +6,7 @@
 #include "util/heap_tuning.h"
 
 #include "bench_scenes.h"
+#include "pipeline_bench.h"
 #include "pipelines/kit/render_frame.h"
 
 namespace ontile {
@@ -58,9 +59,10 @@ ONTILE_FRAME_BENCH(BM_ToyCar);
 }  // namespace ontile
 
 // Google Benchmark's main, with freed memory kept in the heap so every iteration runs in the
-// steady state (util/heap_tuning.h).
+// steady state (util/heap_tuning.h), and the benchmarks registered at run time (pipeline_bench.cpp).
 int main(int argc, char** argv) {
   ontile::keep_freed_memory_in_the_heap();
+  ontile::register_pipeline_benchmarks();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
