@@ -49,6 +49,30 @@ void fill_taps(std::mt19937& rng, int x0, int y0, int step, bool scattered, int 
   }
 }
 
+// Random edge flags of a batch, an edge about once in `edge_odds` fragments, and nearest taps.
+FragmentEdges random_edges(std::mt19937& rng, int edge_odds) {
+  const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  FragmentEdges edges;
+  for (int f = 0; f < kBatchFragments; ++f) {
+    const bool depth_edge = pick(edge_odds) == 0;
+    const bool edge = depth_edge || pick(edge_odds) == 0;
+    edges.depth_edge |= uint64_t{depth_edge} << f;
+    edges.edge |= uint64_t{edge} << f;
+    edges.nearest_tap[f] = pick(kTaps);
+  }
+  return edges;
+}
+
+// The active fragments of a batch of `count`: all of them, or random ones in every fifth batch.
+// The two draws are separate statements (operands of | are unsequenced).
+uint64_t random_active(std::mt19937& rng, int b, int count) {
+  const uint64_t in_count = count == 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
+  if (b % 5 != 4) return in_count;
+  const uint64_t low = rng();
+  const uint64_t high = rng();
+  return (low | high << 32) & in_count;
+}
+
 TEST(SobelTraceKernel, ThirtyTwoBitLanesRecordTheSixtyFourBitKernelsGranules) {
   std::mt19937 rng(2026);
   const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
@@ -88,19 +112,9 @@ TEST(SobelTraceKernel, ThirtyTwoBitLanesRecordTheSixtyFourBitKernelsGranules) {
       const int y0 = kind == 1 ? (pick(2) ? 0 : h - 4) : pick(h - 3);
       FragmentTaps taps;
       fill_taps(rng, x0, y0, step, kind == 3, w, h, color_w, color_h, taps);
-      FragmentEdges edges;
-      const int edge_odds = b % 3 == 0 ? 2 : 12;
-      for (int f = 0; f < kBatchFragments; ++f) {
-        const bool depth_edge = pick(edge_odds) == 0;
-        const bool edge = depth_edge || pick(edge_odds) == 0;
-        edges.depth_edge |= uint64_t{depth_edge} << f;
-        edges.edge |= uint64_t{edge} << f;
-        edges.nearest_tap[f] = pick(kTaps);
-      }
+      const FragmentEdges edges = random_edges(rng, b % 3 == 0 ? 2 : 12);
       const int count = b % 6 == 5 ? 16 * (1 + pick(4)) : kBatchFragments;
-      const uint64_t in_count = count == 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
-      const uint64_t active =
-          (b % 5 == 4 ? rng() | (uint64_t{rng()} << 32) : ~uint64_t{0}) & in_count;
+      const uint64_t active = random_active(rng, b, count);
       std::vector<uint64_t> expected(kBatchFragments * kTraceSlots), got(expected.size());
       // The trace before: a random granule, or the first read's (dropped when repeated).
       uint64_t last_expected = pick(2) ? rng() : (planes.depth.origin + 4096) >> 6;
@@ -176,19 +190,9 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
       const int y0 = kind == 1 ? (pick(2) ? 0 : h - 4) : pick(h - 3);
       FragmentTaps taps;
       fill_taps(rng, x0, y0, step, kind == 3, w, h, color_w, color_h, taps);
-      FragmentEdges edges;
-      const int edge_odds = b % 3 == 0 ? 2 : 12;
-      for (int f = 0; f < kBatchFragments; ++f) {
-        const bool depth_edge = pick(edge_odds) == 0;
-        const bool edge = depth_edge || pick(edge_odds) == 0;
-        edges.depth_edge |= uint64_t{depth_edge} << f;
-        edges.edge |= uint64_t{edge} << f;
-        edges.nearest_tap[f] = pick(kTaps);
-      }
+      const FragmentEdges edges = random_edges(rng, b % 3 == 0 ? 2 : 12);
       const int count = b % 6 == 5 ? 16 * (1 + pick(4)) : kBatchFragments;
-      const uint64_t in_count = count == 64 ? ~uint64_t{0} : (uint64_t{1} << count) - 1;
-      const uint64_t active =
-          (b % 5 == 4 ? rng() | (uint64_t{rng()} << 32) : ~uint64_t{0}) & in_count;
+      const uint64_t active = random_active(rng, b, count);
       const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
       std::vector<uint64_t> expected(room), got(room), dispatched(room);
       // The trace before: a random granule, or the first read's (the template kernel declines).
@@ -255,15 +259,7 @@ TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
       const int y0 = 1 + pick(h - 5);
       FragmentTaps taps;
       fill_taps(rng, x0 == 0 ? 16 : x0, y0, 1, false, w, h, w, h, taps);
-      FragmentEdges edges;
-      const int edge_odds = b % 3 == 0 ? 40 : (b % 3 == 1 ? 300 : 6);
-      for (int f = 0; f < kBatchFragments; ++f) {
-        const bool depth_edge = pick(edge_odds) == 0;
-        const bool edge = depth_edge || pick(edge_odds) == 0;
-        edges.depth_edge |= uint64_t{depth_edge} << f;
-        edges.edge |= uint64_t{edge} << f;
-        edges.nearest_tap[f] = pick(kTaps);
-      }
+      const FragmentEdges edges = random_edges(rng, b % 3 == 0 ? 40 : (b % 3 == 1 ? 300 : 6));
       const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
       std::vector<uint64_t> expected(room), got(room);
       uint64_t last_expected = pick(2) ? rng() : (planes.depth.origin + 4096) >> 6;

@@ -18,16 +18,11 @@ HWY_BEFORE_NAMESPACE();
 namespace ontile::sobel {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+using ontile::HWY_NAMESPACE::kLaneBit32;
 using ontile::HWY_NAMESPACE::mask_bits;
 
 using DU = hn::ScalableTag<uint32_t>;
 using VU = hn::Vec<DU>;
-
-// Bit i for lane i (x86 vectors hold at most 16 32-bit lanes).
-alignas(64) constexpr uint32_t kLaneBit32[16] = {1u << 0, 1u << 1, 1u << 2,  1u << 3,
-                                                 1u << 4, 1u << 5, 1u << 6,  1u << 7,
-                                                 1u << 8, 1u << 9, 1u << 10, 1u << 11,
-                                                 1u << 12, 1u << 13, 1u << 14, 1u << 15};
 
 // Slots of a fragment's 20 reads, as in the 64-bit kernel: depth taps 0-8, the normal centre
 // 9, the other normal taps 10-17 in row-major order, the colour 18, the border 19.

@@ -18,17 +18,12 @@ HWY_BEFORE_NAMESPACE();
 namespace ontile::sobel {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+using ontile::HWY_NAMESPACE::kLaneBit32;
 using ontile::HWY_NAMESPACE::mask_bits;
 
 using DU = hn::ScalableTag<uint32_t>;
 using VU = hn::Vec<DU>;
 using DW = hn::ScalableTag<uint64_t>;
-
-// Bit i for lane i (x86 vectors hold at most 16 32-bit lanes).
-alignas(64) constexpr uint32_t kLaneBit32[16] = {1u << 0, 1u << 1, 1u << 2,  1u << 3,
-                                                 1u << 4, 1u << 5, 1u << 6,  1u << 7,
-                                                 1u << 8, 1u << 9, 1u << 10, 1u << 11,
-                                                 1u << 12, 1u << 13, 1u << 14, 1u << 15};
 
 HWY_INLINE hn::Mask<DU> lanes_of(DU du, uint64_t bits) {
   const VU word = hn::Set(du, static_cast<uint32_t>(bits & 0xFFFFu));
