@@ -360,7 +360,7 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
   while (i < count) {
     const size_t end = count - i > kBlock ? i + kBlock : count;
     size_t breaks = 0;
-    if (kOlderWays == 15 && scalar) {
+    if (scalar) {
       misses += ReplayTopTwoScalar<kPlain>(sets, regions, granules + i, end - i, breaks);
       i = end;
     } else {
@@ -373,7 +373,7 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
         ++breaks;
       }
     }
-    scalar = breaks * kScalarBreakRatio > kBlock;
+    scalar = kOlderWays == 15 && breaks * kScalarBreakRatio > kBlock;  // the scalar loop is 16-way
   }
   return misses;
 }

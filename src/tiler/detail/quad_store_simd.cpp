@@ -180,28 +180,14 @@ void FillPlaneKernel(glm::vec4* plane, size_t count, glm::vec4 value) {
   for (; i < total; ++i) floats[i] = value[static_cast<int>(i % 4)];
 }
 
-void FillDepthKernel(float* depth, size_t count, float value) {
+// plane[0..count) = value, four vectors per step (depth planes and 8-bit code planes).
+template <typename T>
+HWY_INLINE void FillLanes(T* plane, size_t count, T value) {
   size_t i = 0;
 #if HWY_TARGET != HWY_SCALAR
-  const hn::ScalableTag<float> d;
+  const hn::ScalableTag<T> d;
   const size_t n = hn::Lanes(d);
   const auto v = hn::Set(d, value);
-  for (; i + 4 * n <= count; i += 4 * n) {
-    hn::StoreU(v, d, depth + i);
-    hn::StoreU(v, d, depth + i + n);
-    hn::StoreU(v, d, depth + i + 2 * n);
-    hn::StoreU(v, d, depth + i + 3 * n);
-  }
-#endif
-  for (; i < count; ++i) depth[i] = value;
-}
-
-void FillCodesKernel(uint32_t* plane, size_t count, uint32_t code) {
-  size_t i = 0;
-#if HWY_TARGET != HWY_SCALAR
-  const hn::ScalableTag<uint32_t> d;
-  const size_t n = hn::Lanes(d);
-  const auto v = hn::Set(d, code);
   for (; i + 4 * n <= count; i += 4 * n) {
     hn::StoreU(v, d, plane + i);
     hn::StoreU(v, d, plane + i + n);
@@ -209,8 +195,12 @@ void FillCodesKernel(uint32_t* plane, size_t count, uint32_t code) {
     hn::StoreU(v, d, plane + i + 3 * n);
   }
 #endif
-  for (; i < count; ++i) plane[i] = code;
+  for (; i < count; ++i) plane[i] = value;
 }
+
+void FillDepthKernel(float* depth, size_t count, float value) { FillLanes(depth, count, value); }
+
+void FillCodesKernel(uint32_t* plane, size_t count, uint32_t code) { FillLanes(plane, count, code); }
 
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile
