@@ -5,6 +5,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "util/atomic_file.h"
@@ -34,6 +35,15 @@ std::string missing_subcommand_message(CLI::App& app) {
   return message;
 }
 
+// The wording of CLI11's own ExtrasError, so an unknown option reads the same whether or not a
+// required option is also missing.
+std::string unexpected_arguments_message(const std::vector<std::string>& unknown) {
+  std::string message = unknown.size() == 1 ? "The following argument was not expected:"
+                                             : "The following arguments were not expected:";
+  for (const std::string& argument : unknown) message += " " + argument;
+  return message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -58,7 +68,12 @@ int main(int argc, char** argv) {
     return app.exit(e);  // --help and --version: printed on stdout, exit 0
   } catch (const CLI::RequiredError& e) {
     const bool no_subcommand = std::string(e.what()) == "A subcommand is required";
-    return print_error(no_subcommand ? missing_subcommand_message(app) : e.what(), kExitUsageOrInput);
+    if (no_subcommand) return print_error(missing_subcommand_message(app), kExitUsageOrInput);
+    // CLI11 checks required options before it rejects unknown ones, so `render --bogus` would
+    // be told "--scene is required": name the argument it does not know first.
+    const std::vector<std::string> unknown = app.remaining(true);
+    if (!unknown.empty()) return print_error(unexpected_arguments_message(unknown), kExitUsageOrInput);
+    return print_error(e.what(), kExitUsageOrInput);
   } catch (const CLI::ParseError& e) {
     return print_error(e.what(), kExitUsageOrInput);
   } catch (const MismatchError& e) {

@@ -111,6 +111,10 @@ TEST_F(CliErrors, GenScene) {
           {"gen-scene demo --out " + out("no/d.glb"), out("no/d.glb")},
           {"gen-scene demo --bogus --out " + out("d.glb"), "--bogus"},
           {"gen-scene --out " + out("d.glb"), "name"},
+          // An unknown option is named before a missing required one (CLI11 checks those first).
+          {"gen-scene --bogus", "--bogus"},
+          {"render --bogus", "--bogus"},
+          {"render --scene " + kDemo + " --bogus", "--bogus"},
       },
       scratch_, out_);
 }
