@@ -1,8 +1,6 @@
 // Helpers shared by the batched fragment functors: the uv of one quad for its texture reads, and
 // interpolated normals made unit length over a whole batch as structure-of-arrays lanes.
 #pragma once
-#include <cmath>
-
 #include <glm/glm.hpp>
 
 #include "raster/shader_interface.h"
@@ -60,22 +58,9 @@ inline void batch_set3(BatchVec3& v, int f, glm::vec3 value) {
 }
 
 // Varyings [first, first + 3) made unit length (a zero vector gives +Z) and negated on back
-// faces, for fragments [0, n): the same operations, in the same order, as glm::length and the
-// division by it in toon_unit_normal and shading_normal, so the bits match theirs.
-inline void batch_unit_normals(const FragmentBatch& batch, int first, int n, BatchVec3& out) {
-  const float* x = batch.varyings[first];
-  const float* y = batch.varyings[first + 1];
-  const float* z = batch.varyings[first + 2];
-  const float facing = batch.front_facing ? 1.0f : -1.0f;  // x * -1 is exactly -x
-  for (int f = 0; f < n; ++f) {
-    const float len = std::sqrt((x[f] * x[f] + y[f] * y[f]) + z[f] * z[f]);
-    const bool has_length = len > 0.0f;
-    // Divide unconditionally (by 1 where the length is 0) so the loop has no branches.
-    const float divisor = has_length ? len : 1.0f;
-    out[0][f] = (has_length ? x[f] / divisor : 0.0f) * facing;
-    out[1][f] = (has_length ? y[f] / divisor : 0.0f) * facing;
-    out[2][f] = (has_length ? z[f] / divisor : 1.0f) * facing;
-  }
-}
+// faces, for fragments [0, n) rounded up to whole vectors (n <= kBatchFragments; every array is
+// kBatchFragments long): toon_unit_normal's operations per fragment on SIMD lanes
+// (unit_normal_lanes.cpp), so the bits match it and shading_normal on every target.
+void batch_unit_normals(const FragmentBatch& batch, int first, int n, BatchVec3& out);
 
 }  // namespace ontile

@@ -98,7 +98,7 @@ class UniversalLitShader final : public UniversalLitFragment {
       const float value = p_.emission[c];  // glm's operator[] is a switch: read it once
       for (int f = 0; f < n; ++f) emissive[c][f] = value;
     }
-    universal_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
+    batch_unit_normals(batch, MeshVertexShader::kNormal, n, normal);
     [[maybe_unused]] ShadowBatch shadow_batch;
     [[maybe_unused]] bool batched_shadows = false;
     if constexpr (kShadows) {

@@ -21,6 +21,12 @@ namespace ontile {
 // shading); with steps = n and step_size = 1/n, d in [-k/n, -(k-1)/n) gives k/n. NaN -> 1.
 float cel_shadow_factor(float n_dot_l, int steps, float step_size);
 
+// colour[c][f] = mix(lit[c][f], shadow[c][f], cel_shadow_factor(dot(normal_f, to_light), steps,
+// step_size)) for fragments [0, n) rounded up to whole vectors (n <= kBatchFragments), on SIMD
+// lanes with the same bits.
+void cel_mix_batch(const BatchVec3& normal, const glm::vec3& to_light, int steps, float step_size,
+                   const BatchVec4& lit, const BatchVec4& shadow, int n, BatchVec4& colour);
+
 struct CelParams {
   glm::vec3 to_light{0.0f, 1.0f, 0.0f};  // unit vector towards the light, world space
   int steps = 1;                         // >= 1
@@ -100,16 +106,7 @@ class CelShader final : public FragmentShader {
     }
     alignas(64) BatchVec3 normal;
     batch_unit_normals(batch, ToonVertexShader::kNormal, n, normal);
-    const glm::vec3 l = p_.to_light;
-    alignas(64) float t[kBatchFragments];
-    for (int f = 0; f < n; ++f) {
-      const float n_dot_l = (normal[0][f] * l.x + normal[1][f] * l.y) + normal[2][f] * l.z;  // glm::dot
-      t[f] = cel_shadow_factor(n_dot_l, p_.steps, p_.step_size);
-    }
-    // glm::mix(lit, shadow, t) = lit * (1 - t) + shadow * t.
-    for (int c = 0; c < 4; ++c) {
-      for (int f = 0; f < n; ++f) out.color[0][c][f] = lit[c][f] * (1.0f - t[f]) + shadow[c][f] * t[f];
-    }
+    cel_mix_batch(normal, p_.to_light, p_.steps, p_.step_size, lit, shadow, n, out.color[0]);
   }
 
   CelParams p_;
