@@ -1,7 +1,7 @@
 // Built-in full-screen functors (see full_screen.h).
 #include "shaders_cpp/full_screen.h"
 
-#include <cmath>
+#include "shaders_cpp/gradient_sky_lanes.h"
 
 namespace ontile {
 namespace {
@@ -50,25 +50,10 @@ void ClearColorShader::shade_batch(const FragmentBatch& batch, BatchOutput& out)
 // Per fragment as glm computes it: length = sqrt((x*x + y*y) + z*z), mix(a, b, t) =
 // a * (1 - t) + b * t, min(1, x) = x < 1 ? x : 1; both sides are evaluated and one selected.
 void GradientSkyShader::shade_batch(const FragmentBatch& batch, BatchOutput& out) const {
-  const int n = batch.padded_fragment_count();
-  const float* dx = batch.varyings[FullScreenVertexShader::kViewDirection];
-  const float* dy = batch.varyings[FullScreenVertexShader::kViewDirection + 1];
-  const float* dz = batch.varyings[FullScreenVertexShader::kViewDirection + 2];
-  for (int f = 0; f < n; ++f) {
-    const float len = std::sqrt((dx[f] * dx[f] + dy[f] * dy[f]) + dz[f] * dz[f]);
-    const bool has_length = len > 0.0f;
-    const float up = has_length ? dy[f] / (has_length ? len : 1.0f) : 0.0f;  // no branch: see batch_helpers.h
-    const float above = std::sqrt(up);
-    const float below_t = -up * 4.0f;
-    const float below = below_t < 1.0f ? below_t : 1.0f;
-    const bool is_above = up >= 0.0f;
-    for (int c = 0; c < 3; ++c) {
-      const float sky = horizon_[c] * (1.0f - above) + zenith_[c] * above;
-      const float earth = horizon_[c] * (1.0f - below) + ground_[c] * below;
-      out.color[0][c][f] = is_above ? sky : earth;
-    }
-    out.color[0][3][f] = 1.0f;
-  }
+  gradient_sky_batch(batch.varyings[FullScreenVertexShader::kViewDirection],
+                     batch.varyings[FullScreenVertexShader::kViewDirection + 1],
+                     batch.varyings[FullScreenVertexShader::kViewDirection + 2], batch.padded_fragment_count(),
+                     {zenith_, horizon_, ground_}, out.color[0]);
   // Other outputs (normals, borders of an MRT pass) are never written: the batcher's zeros.
   out.uniform_outputs |= ~uint32_t{1};
 }

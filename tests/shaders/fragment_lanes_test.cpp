@@ -1,9 +1,11 @@
 // The batched functors' per-fragment helpers on SIMD lanes against the scalar code they stand
 // for, bit for bit on every SIMD target: batch_unit_normals against toon_unit_normal, and the
-// cel shader's lit/shadow mix against cel_shadow_factor and glm::mix.
+// cel shader's lit/shadow mix against cel_shadow_factor and glm::mix, and the gradient sky against
+// its per-fragment formula.
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <random>
@@ -12,6 +14,7 @@
 
 #include "raster/cell_raster.h"
 #include "shaders_cpp/batch_helpers.h"
+#include "shaders_cpp/gradient_sky_lanes.h"
 #include "shaders_cpp/toon/cel_shader.h"
 #include "shaders_cpp/toon/toon_outputs.h"
 
@@ -99,6 +102,48 @@ TEST(FragmentLanes, CelMixMatchesTheScalarBandsOnEveryTarget) {
         for (int c = 0; c < 4; ++c) {
           const float expected = lit[c][f] * (1.0f - t) + shadow[c][f] * t;
           ASSERT_EQ(bits(mixed[c][f]), bits(expected)) << target << " steps " << b.steps << " fragment " << f;
+        }
+      }
+    }
+  }
+}
+
+// GradientSkyShader's formula for one fragment, as it was written before it moved onto lanes.
+glm::vec4 sky_of_direction(glm::vec3 d, const SkyColours& sky) {
+  const float len = std::sqrt((d.x * d.x + d.y * d.y) + d.z * d.z);
+  const bool has_length = len > 0.0f;
+  const float up = has_length ? d.y / len : 0.0f;
+  const float above = std::sqrt(up);
+  const float below_t = -up * 4.0f;
+  const float below = below_t < 1.0f ? below_t : 1.0f;
+  glm::vec4 colour(1.0f);
+  for (int c = 0; c < 3; ++c) {
+    const float above_c = sky.horizon[c] * (1.0f - above) + sky.zenith[c] * above;
+    const float below_c = sky.horizon[c] * (1.0f - below) + sky.ground[c] * below;
+    colour[c] = up >= 0.0f ? above_c : below_c;
+  }
+  return colour;
+}
+
+TEST(FragmentLanes, GradientSkyMatchesThePerFragmentFormulaOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  std::mt19937 rng(5);
+  const SkyColours sky{{0.2f, 0.35f, 0.8f}, {0.7f, 0.75f, 0.8f}, {0.3f, 0.25f, 0.2f}};
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (int round = 0; round < 20; ++round) {
+      alignas(64) float dx[kBatchFragments], dy[kBatchFragments], dz[kBatchFragments];
+      for (int f = 0; f < kBatchFragments; ++f) {
+        dx[f] = awkward_component(rng, f + round);
+        dy[f] = f % 5 == 0 ? -awkward_component(rng, f) : awkward_component(rng, f + 2 * round);
+        dz[f] = awkward_component(rng, f + 3 * round);
+      }
+      alignas(64) float colour[4][kBatchFragments];
+      gradient_sky_batch(dx, dy, dz, kBatchFragments, sky, colour);
+      for (int f = 0; f < kBatchFragments; ++f) {
+        const glm::vec4 expected = sky_of_direction({dx[f], dy[f], dz[f]}, sky);
+        for (int c = 0; c < 4; ++c) {
+          ASSERT_EQ(bits(colour[c][f]), bits(expected[c])) << target << " fragment " << f << " channel " << c;
         }
       }
     }
