@@ -40,6 +40,8 @@ class LambertShader final : public FragmentShader {
   bool may_discard() const override { return kAlphaTest; }
   // Per-fragment arithmetic and per-quad texture reads (base, then emission, quad by quad).
   bool batches_across_triangles() const override { return true; }
+  // Colour, every channel of every padded fragment (the lighting loop below runs over all).
+  int outputs_always_written() const override { return 1; }
 
   // Structure-of-arrays over the batch: texture reads per quad (the LOD needs the quad's
   // derivatives), the lighting arithmetic as plain loops over fragment lanes.
