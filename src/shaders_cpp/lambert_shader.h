@@ -41,6 +41,12 @@ class LambertShader final : public FragmentShader {
   bool may_discard() const override { return kAlphaTest; }
   // Per-fragment arithmetic and per-quad texture reads (base, then emission, quad by quad).
   bool batches_across_triangles() const override { return true; }
+  // The normal, and the UV where a texture is read (not the world position): the raster core
+  // interpolates only these.
+  uint32_t varyings_read() const override {
+    constexpr uint32_t kNormalBits = 7u << MeshVertexShader::kNormal, kUvBits = 3u << MeshVertexShader::kUv;
+    return kNormalBits | (kBaseMap || kEmissionMap ? kUvBits : 0u);
+  }
   // Colour, every channel of every padded fragment (lambert_light_batch writes them all).
   int outputs_always_written() const override { return 1; }
 

@@ -129,31 +129,36 @@ void QuadBatcher::write_back_single_sample() {
     }
     full_quads = partial_quads = 0;
   };
+  // Locals, not members: the stores below are ints too, so members would be reloaded per quad.
   const int triangles = triangle_count_;
+  const bool write_color = ctx.write_color;
+  const int x0 = ctx.rect.x0, y0 = ctx.rect.y0;
+  const size_t width = static_cast<size_t>(memory_->width());
+  const size_t samples = static_cast<size_t>(memory_->samples());
+  float* const depth_plane = memory_->depth_plane();
+  uint64_t rejected = 0, written = 0;
   for (int t = 0; t < triangles; ++t) {
     const int q_end = end_of(t);
     for (int q = triangles_[t].first_quad; q < q_end; ++q) {
       const uint8_t lanes = lanes_of(quad_passing_[q]);
-      if (late_z) {
-        counters_->fragments_depth_rejected += lane_count(lanes_of(quad_coverage_[q]) & ~lanes);
-      }
-      counters_->samples_written += lane_count(lanes);
+      if (late_z) rejected += static_cast<uint64_t>(lane_count(lanes_of(quad_coverage_[q]) & ~lanes));
+      written += static_cast<uint64_t>(lane_count(lanes));
       if (!lanes) continue;
       const int qx = quad_qx_[q], qy = quad_qy_[q];
-      const size_t pixel = memory_->index(qx - ctx.rect.x0, qy - ctx.rect.y0, 0);
+      // TileMemory::index(qx - x0, qy - y0, 0).
+      const size_t pixel = (static_cast<size_t>(qy - y0) * width + static_cast<size_t>(qx - x0)) * samples;
       if (late_depth_write) {
         // The cell's depth at each passing lane, as rasterize_cells computed it.
         // (Cells are aligned to multiples of kCellSizePx: the quad's offset in its cell.)
         const float* z = cell_depth_ + static_cast<size_t>(quad_cell_[q]) * kMaxSamples * kCellPixels +
                          (qy & (kCellSizePx - 1)) * kCellSizePx + (qx & (kCellSizePx - 1));
-        float* depth = memory_->depth_plane() + pixel;
+        float* depth = depth_plane + pixel;
         for (int lane = 0; lane < kQuadLanes; ++lane) {
           if (!((lanes >> lane) & 1u)) continue;
-          depth[static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1)] =
-              z[(lane >> 1) * kCellSizePx + (lane & 1)];
+          depth[static_cast<size_t>(lane >> 1) * width + (lane & 1)] = z[(lane >> 1) * kCellSizePx + (lane & 1)];
         }
       }
-      if (!ctx.write_color) continue;
+      if (!write_color) continue;
       const int first = slot_[0][q] * kQuadLanes;
       if (lanes == 0xF) {
         full_first_fragment_[full_quads] = first;
@@ -167,6 +172,8 @@ void QuadBatcher::write_back_single_sample() {
     }
     if (full_quads || partial_quads) store_triangle();
   }
+  counters_->fragments_depth_rejected += rejected;
+  counters_->samples_written += written;
 }
 
 }  // namespace ontile
