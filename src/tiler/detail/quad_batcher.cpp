@@ -121,6 +121,7 @@ void QuadBatcher::shade_invocation(int inv) {
   int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
   int runs = 0;
   int count = 0;
+  uint64_t shaded = 0;  // fragments: the active lanes of the shaded quads
   // A local: the stores below are ints too, so the member would be reloaded every quad.
   const int triangles = triangle_count_;
   for (int t = 0; t < triangles; ++t) {
@@ -131,6 +132,7 @@ void QuadBatcher::shade_invocation(int inv) {
       const uint8_t lanes = lanes_of(shaded_samples[q] & sample_bits);
       slot_[inv][q] = lanes ? count : -1;
       if (!lanes) continue;
+      shaded += static_cast<uint64_t>(lane_count(lanes));
       b.quad_x_px[count] = quad_qx_[q];
       b.quad_y_px[count] = quad_qy_[q];
       b.lane_mask[count] = lanes;
@@ -204,8 +206,6 @@ void QuadBatcher::shade_invocation(int inv) {
                       padded);
     }
   }
-  uint64_t shaded = 0;
-  for (int slot = 0; slot < count; ++slot) shaded += static_cast<uint64_t>(lane_count(b.lane_mask[slot]));
   counters_->fragments_shaded += shaded;
   if (out.discard_mask == 0) return;
   for (int q = 0; q < queued_; ++q) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <bit>
 
 #include "tiler/detail/tile_executor.h"
 #include "tiler/detail/tile_scratch.h"

@@ -1,21 +1,18 @@
 // Per-tile replay of the primitive list (see tile_executor.h). For each triangle: coverage and
 // early depth per 8x8 cell (trivial reject/accept, SIMD edge evaluation, hierarchical Z), then
-// shading of the surviving quads in the tile's row-major quad order, in batches of up to 16
-// quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
+// the quad walk (quad_walk.cpp) queues the surviving quads in the tile's row-major quad order
+// for shading in batches of up to 16 quads per functor call, blending and quantised writes
+// (tiler/quad_batcher.h).
 #include "tiler/detail/tile_executor.h"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <bit>
-#include <cstring>
 #include <optional>
 
 #include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
 #include "tiler/detail/hierarchical_depth.h"
 #include "tiler/detail/quad_batcher.h"
-#include "tiler/detail/quad_store_simd.h"
 #include "tiler/detail/tile_fetch.h"
 #include "tiler/detail/tile_load_store.h"
 #include "tiler/detail/tile_scratch.h"
