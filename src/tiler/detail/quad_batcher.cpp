@@ -1,14 +1,13 @@
-// Batched shading and the per-quad writes of a tile's triangles (see quad_batcher.h).
+// Batched shading of a tile's triangles (see quad_batcher.h): the batch's triangles and draw
+// state, interpolation and the functor call; the writes are in quad_write_back.cpp.
 #include "tiler/detail/quad_batcher.h"
 
 #include <atomic>
-#include <bit>
 #include <cstring>
 
 #include "raster/blend.h"
 #include "raster/pixel_quantize_simd.h"
 #include "tiler/detail/hierarchical_depth.h"
-#include "tiler/detail/quad_store_simd.h"
 
 namespace ontile {
 namespace {
@@ -84,22 +83,6 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
   triangles_[triangle_count_++] =
       BatchTriangle{&ctx.tri, ctx.varyings, ctx.triangle_ref, planes[0].dx, planes[0].dy,
                     planes[1].dx, planes[1].dy, planes[2].dx, planes[2].dy, queued_};
-  live_from_ = queued_;
-}
-
-void QuadBatcher::end_triangle() {
-  if (!across_triangles_) {
-    flush();
-    return;
-  }
-  for (int q = live_from_; q < queued_; ++q) {
-    QueuedQuad& quad = queue_[q];
-    const CellPlane* planes = cells_[quad.cell].planes;
-    quad.l1 = planes[0].origin;
-    quad.l2 = planes[1].origin;
-    quad.z = planes[2].origin;
-  }
-  live_from_ = queued_;
 }
 
 void QuadBatcher::flush() {
@@ -121,7 +104,6 @@ void QuadBatcher::flush() {
   triangles_[0].first_quad = 0;
   triangle_count_ = 1;
   queued_ = 0;
-  live_from_ = 0;
 }
 
 // Shades, at one sample position (or the pixel centre), every queued quad that has lanes for
@@ -133,51 +115,48 @@ void QuadBatcher::shade_invocation(int inv) {
   BatchOutput& out = *outputs_[inv];
   const float off_x = ctx.per_sample ? static_cast<float>(ctx.pattern.x[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
   const float off_y = ctx.per_sample ? static_cast<float>(ctx.pattern.y[inv] - kSubpixelScale / 2) / kSubpixelScale : 0.0f;
+  // Late Z shades the covered lanes (the depth test follows), early Z those that passed.
+  const QuadCoverage* const shaded_samples = ctx.late_z ? quad_coverage_ : quad_passing_;
   // Runs of batch quads of one triangle: triangle table index and first batch quad.
   int run_triangle[kBatchQuads + 1], run_first[kBatchQuads + 1];
   int runs = 0;
   int count = 0;
+  uint64_t shaded = 0;  // fragments: the active lanes of the shaded quads
   // A local: the stores below are ints too, so the member would be reloaded every quad.
   const int triangles = triangle_count_;
   for (int t = 0; t < triangles; ++t) {
     const int first_slot = count;
     const uint32_t primitive_id = triangles_[t].tri->primitive_id;
-    // Only the open triangle's quads (from live_from_ on) still have their planes in the cells.
-    const bool live = triangles_[t].first_quad >= live_from_;
     const int q_end = end_of(t);
     for (int q = triangles_[t].first_quad; q < q_end; ++q) {
-      const QueuedQuad& quad = queue_[q];
-      const uint8_t lanes = lanes_of((ctx.late_z ? quad.coverage : quad.passing) & sample_bits);
+      const uint8_t lanes = lanes_of(shaded_samples[q] & sample_bits);
       slot_[inv][q] = lanes ? count : -1;
       if (!lanes) continue;
-      const int cx = quad.cell_x, cy = quad.cell_y;
-      b.quad_x_px[count] = quad.qx;
-      b.quad_y_px[count] = quad.qy;
+      shaded += static_cast<uint64_t>(lane_count(lanes));
+      b.quad_x_px[count] = quad_qx_[q];
+      b.quad_y_px[count] = quad_qy_[q];
       b.lane_mask[count] = lanes;
       b.quad_primitive_id[count] = primitive_id;
-      float l1 = quad.l1, l2 = quad.l2, z = quad.z;
-      if (live) {
-        const CellPlane* planes = cells_[quad.cell].planes;
-        l1 = planes[0].origin;
-        l2 = planes[1].origin;
-        z = planes[2].origin;
-      }
-      if (!ctx.per_sample) {  // pixel centres: one entry per quad (interpolate_whole_quads)
-        origin_ox_[count] = quad.qx - cx;
-        origin_oy_[count] = quad.qy - cy;
-        origin_l1_[count] = l1;
-        origin_l2_[count] = l2;
-        origin_z_[count] = z;
+      if (!ctx.per_sample) {
+        // Pixel centres: the quad's origin entry packed down to its batch position (one
+        // invocation, so nothing reads entry q again; count <= q).
+        if (count != q) {
+          origin_ox_[count] = origin_ox_[q];
+          origin_oy_[count] = origin_oy_[q];
+          origin_l1_[count] = origin_l1_[q];
+          origin_l2_[count] = origin_l2_[q];
+          origin_z_[count] = origin_z_[q];
+        }
         ++count;
         continue;
       }
       for (int lane = 0; lane < kQuadLanes; ++lane) {
         const int f = count * kQuadLanes + lane;
-        fx_[f] = static_cast<float>(quad.qx + (lane & 1) - cx) + off_x;
-        fy_[f] = static_cast<float>(quad.qy + (lane >> 1) - cy) + off_y;
-        l1_[f] = l1;
-        l2_[f] = l2;
-        z_[f] = z;
+        fx_[f] = static_cast<float>(origin_ox_[q] + (lane & 1)) + off_x;
+        fy_[f] = static_cast<float>(origin_oy_[q] + (lane >> 1)) + off_y;
+        l1_[f] = origin_l1_[q];
+        l2_[f] = origin_l2_[q];
+        z_[f] = origin_z_[q];
       }
       ++count;
     }
@@ -201,8 +180,9 @@ void QuadBatcher::shade_invocation(int inv) {
   b.sample = ctx.per_sample ? inv : -1;
   b.fetch = ctx.fetch;
   // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
-  // images never depend on earlier contents.
-  for (int k = 0; k < b.color_output_count; ++k) {
+  // images never depend on earlier contents. Those it writes in full for every active fragment
+  // need no zeroing: an inactive or padding lane's output is never written back.
+  for (int k = ctx.draw.fragment_shader->outputs_always_written(); k < b.color_output_count; ++k) {
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
@@ -226,16 +206,17 @@ void QuadBatcher::shade_invocation(int inv) {
                       padded);
     }
   }
+  counters_->fragments_shaded += shaded;
+  if (out.discard_mask == 0) return;
   for (int q = 0; q < queued_; ++q) {
     const int slot = slot_[inv][q];
     if (slot < 0) continue;
-    counters_->fragments_shaded += lane_count(b.lane_mask[slot]);
     const uint32_t discarded = static_cast<uint32_t>(out.discard_mask >> (slot * kQuadLanes)) & 0xFu;
     for (int lane = 0; discarded && lane < kQuadLanes; ++lane) {
       if (!((discarded >> lane) & 1u)) continue;
       const QuadCoverage lane_bits = (QuadCoverage{0xFF} << (lane * kMaxSamples)) & sample_bits;
-      queue_[q].passing &= ~lane_bits;
-      queue_[q].coverage &= ~lane_bits;
+      quad_passing_[q] &= ~lane_bits;
+      quad_coverage_[q] &= ~lane_bits;
     }
   }
 }
@@ -299,167 +280,6 @@ void QuadBatcher::interpolate_samples(int count, int padded, int runs, const int
     in.l2_origin = l2_ + first;
     in.z_origin = z_ + first;
     interpolate_fragments(in, end - first, b.depth + first, &b.varyings[0][first], kBatchFragments);
-  }
-}
-
-namespace {
-
-// Records, per covered pixel, which samples were covered and written and what was accessed.
-void record_fragments(const TriangleContext& ctx, const BatchTriangle& triangle, int qx, int qy,
-                      QuadCoverage coverage, QuadCoverage written) {
-  const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
-    if (!covered) continue;
-    FragmentAccess f;
-    f.triangle_ref = triangle.triangle_ref;
-    f.x_px = static_cast<uint16_t>(qx + (lane & 1));
-    f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
-    f.covered_samples = covered;
-    f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
-    f.subpass = static_cast<uint8_t>(triangle.tri->subpass);
-    if (ctx.depth_test) f.flags |= kDepthRead;
-    if (f.written_samples && ctx.depth_write) f.flags |= kDepthWritten;
-    if (f.written_samples && ctx.write_color && !ctx.subpass.color_outputs.empty()) {
-      f.flags |= kColorWritten;
-      if (blend_reads) f.flags |= kColorRead;
-    }
-    ctx.fragments->push_back(f);
-  }
-}
-
-}  // namespace
-
-void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
-  const TriangleContext& ctx = *ctx_;
-  const QueuedQuad& quad = queue_[q];
-  const QuadCoverage passing = quad.passing;
-  if (ctx.late_z) {
-    counters_->fragments_depth_rejected +=
-        lane_count(lanes_of(quad.coverage) & ~lanes_of(passing));
-  }
-  if (ctx.fragments) {
-    record_fragments(ctx, triangle, quad.qx, quad.qy, quad.coverage, passing);
-  }
-  if (!passing) return;
-  const int samples = ctx.pattern.count;
-  const std::vector<int>& outputs = ctx.subpass.color_outputs;
-  const int cx = quad.cell_x, cy = quad.cell_y;
-  const float* z = cell_depth_ + static_cast<size_t>(quad.cell) * kMaxSamples * kCellPixels;
-  const bool late_depth_write = ctx.late_z && ctx.depth_write;
-  float* depth_plane = memory_->depth_plane();
-  for (int lane = 0; lane < kQuadLanes; ++lane) {
-    const unsigned lane_bits = lane_coverage(passing, lane);
-    if (!lane_bits) continue;
-    const int x = quad.qx + (lane & 1), y = quad.qy + (lane >> 1);
-    for (int s = 0; s < samples; ++s) {
-      if (!((lane_bits >> s) & 1u)) continue;
-      const size_t i = memory_->index(x - ctx.rect.x0, y - ctx.rect.y0, s);
-      if (late_depth_write) depth_plane[i] = z[s * kCellPixels + (y - cy) * kCellSizePx + (x - cx)];
-      if (ctx.write_color) {
-        const int inv = ctx.per_sample ? s : 0;
-        const BatchOutput& out = *outputs_[inv];
-        const int f = slot_[inv][q] * kQuadLanes + lane;
-        for (size_t k = 0; k < outputs.size(); ++k) {
-          const int a = outputs[k];
-          if (memory_->holds_codes(a)) {
-            if (opaque_writes_) {
-              memory_->code_plane(a)[i] = codes_[inv][k][f];
-            } else {
-              memory_->set_color(a, i, blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f),
-                                                   memory_->color(a, i)));
-            }
-            continue;
-          }
-          glm::vec4& dst = memory_->color_plane(a)[i];
-          if (opaque_writes_) {
-            dst = out.get(static_cast<int>(k), f);
-          } else {
-            dst = quantize_pixel(ctx.pass.attachments[a].format,
-                                 blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f), dst));
-          }
-        }
-      }
-      ++counters_->samples_written;
-    }
-  }
-}
-
-// write_back for the common case, the batch at once: one sample per pixel, outputs already
-// quantised per batch. Depth was written by early Z, or (late Z: functors that may discard, such
-// as deferred lighting) is written here for the samples that passed the depth test and were not
-// discarded, with write_back's rejection count. Quads whose four lanes all pass are copied to
-// tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never share a pixel,
-// so within a triangle the order of writes does not matter; a later triangle's quads may
-// overwrite an earlier one's, so full quads are stored before the next triangle's.
-void QuadBatcher::write_back_single_sample() {
-  const TriangleContext& ctx = *ctx_;
-  const std::vector<int>& outputs = ctx.subpass.color_outputs;
-  const BatchOutput& out = *outputs_[0];
-  const bool late_z = ctx.late_z;
-  const bool late_depth_write = late_z && ctx.depth_write;
-  // A triangle's quads, written when the triangle ends (a later triangle of the batch may
-  // cover the same pixels): whole quads, and quads with some lanes written.
-  int full_quads = 0, partial_quads = 0;
-  int32_t partial_first_fragment[kBatchQuads];
-  uint32_t partial_pixel[kBatchQuads];
-  uint8_t partial_lanes[kBatchQuads];
-  const auto store_triangle = [&] {
-    for (size_t k = 0; k < outputs.size(); ++k) {
-      if (memory_->holds_codes(outputs[k])) {
-        uint32_t* const codes = memory_->code_plane(outputs[k]);
-        if (full_quads) store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, memory_->width(), codes);
-        if (partial_quads) {
-          store_quad_codes(codes_[0][k], partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), codes);
-        }
-        continue;
-      }
-      const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
-                                        out.color[k][3]};
-      glm::vec4* const plane = memory_->color_plane(outputs[k]);
-      if (full_quads) store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(), plane);
-      if (partial_quads) {
-        store_quads(channels, partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), plane);
-      }
-    }
-    full_quads = partial_quads = 0;
-  };
-  const int triangles = triangle_count_;
-  for (int t = 0; t < triangles; ++t) {
-    const int q_end = end_of(t);
-    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
-      const QueuedQuad& quad = queue_[q];
-      const uint8_t lanes = lanes_of(quad.passing);
-      if (late_z) {
-        counters_->fragments_depth_rejected += lane_count(lanes_of(quad.coverage) & ~lanes);
-      }
-      counters_->samples_written += lane_count(lanes);
-      if (!lanes) continue;
-      const size_t pixel = memory_->index(quad.qx - ctx.rect.x0, quad.qy - ctx.rect.y0, 0);
-      if (late_depth_write) {
-        // The cell's depth at each passing lane, as rasterize_cells computed it.
-        const float* z = cell_depth_ + static_cast<size_t>(quad.cell) * kMaxSamples * kCellPixels +
-                         (quad.qy - quad.cell_y) * kCellSizePx + (quad.qx - quad.cell_x);
-        float* depth = memory_->depth_plane() + pixel;
-        for (int lane = 0; lane < kQuadLanes; ++lane) {
-          if (!((lanes >> lane) & 1u)) continue;
-          depth[static_cast<size_t>(lane >> 1) * memory_->width() + (lane & 1)] =
-              z[(lane >> 1) * kCellSizePx + (lane & 1)];
-        }
-      }
-      if (!ctx.write_color) continue;
-      const int first = slot_[0][q] * kQuadLanes;
-      if (lanes == 0xF) {
-        full_first_fragment_[full_quads] = first;
-        full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
-        ++full_quads;
-        continue;
-      }
-      partial_first_fragment[partial_quads] = first;
-      partial_pixel[partial_quads] = static_cast<uint32_t>(pixel);
-      partial_lanes[partial_quads++] = lanes;
-    }
-    if (full_quads || partial_quads) store_triangle();
   }
 }
 

@@ -98,15 +98,6 @@ struct CellState {
   CellPlane planes[3];  // lambda1, lambda2, depth at the cell's origin
 };
 
-struct QueuedQuad {
-  int qx, qy, cell;
-  int cell_x, cell_y;  // the cell's top-left pixel
-  QuadCoverage coverage, passing;
-  // The triangle's plane values at the cell's origin, copied from CellState::planes when the
-  // triangle ends with the batch still open (the next triangle overwrites the cell state).
-  float l1, l2, z;
-};
-
 // What a batch keeps of each triangle with quads in it: the tile's cell state already holds a
 // later triangle's planes when the batch is shaded.
 struct BatchTriangle {
@@ -139,15 +130,21 @@ class QuadBatcher {
   // (the gradients are per triangle). Every pointer must stay valid until the batch is flushed.
   void begin(const TriangleContext& ctx, TileMemory& memory, TileCounters& counters,
              const CellState* cells, const float* cell_depth, const CellPlane* planes);
+  // Queues a quad: its queue entry and its interpolation inputs at once (the cell's plane
+  // origins are the triangle's while it adds quads; a later triangle overwrites the cells).
   void add(int qx, int qy, int cell, int cell_x, int cell_y, QuadCoverage coverage, QuadCoverage passing) {
-    QueuedQuad& quad = queue_[queued_++];
-    quad.qx = qx;
-    quad.qy = qy;
-    quad.cell = cell;
-    quad.cell_x = cell_x;
-    quad.cell_y = cell_y;
-    quad.coverage = coverage;
-    quad.passing = passing;
+    const int q = queued_++;
+    const CellPlane* planes = cells_[cell].planes;
+    quad_qx_[q] = qx;
+    quad_qy_[q] = qy;
+    quad_cell_[q] = cell;
+    quad_coverage_[q] = coverage;
+    quad_passing_[q] = passing;
+    origin_ox_[q] = qx - cell_x;
+    origin_oy_[q] = qy - cell_y;
+    origin_l1_[q] = planes[0].origin;
+    origin_l2_[q] = planes[1].origin;
+    origin_z_[q] = planes[2].origin;
     if (queued_ == kBatchQuads) flush();
   }
   // The whole-tile path (full-screen triangles; whole_tile_batches.cpp): called right after
@@ -160,13 +157,14 @@ class QuadBatcher {
   // depth (or whole_quads_pass_as_covered) and no fragment recording. The cells grid: cell (i, j) has its top-left pixel at
   // (first_cell_x + 8 i, first_cell_y + 8 j), index j * cells_x + i in cells_.
   bool add_whole_rect(const TileRect& rect, int first_cell_x, int first_cell_y, int cells_x);
-  // Ends a triangle: its quads stay queued only if the next triangle may join them, and then
-  // keep their plane origins.
-  void end_triangle();
+  // Ends a triangle: its quads stay queued only if the next triangle may join them.
+  void end_triangle() {
+    if (!across_triangles_) flush();
+  }
   // Shades and writes every queued quad.
   void flush();
   // Drops queued quads without shading them (a tile that threw may have left some).
-  void reset() { queued_ = live_from_ = 0; }
+  void reset() { queued_ = 0; }
 
  private:
   void shade_invocation(int invocation);
@@ -193,9 +191,11 @@ class QuadBatcher {
   bool opaque_writes_ = false;     // blending is a plain overwrite: outputs are quantised per batch
   bool across_triangles_ = false;  // the batch may take the next triangle's quads
   uint32_t varyings_read_ = ~uint32_t{0};  // the functor's varyings_read(): only those interpolated
-  QueuedQuad queue_[kBatchQuads];
+  // The queue, quad q of the batch: top-left pixel, cell index (its top-left pixel is the
+  // quad's rounded down to a multiple of kCellSizePx), coverage and passing samples.
+  int32_t quad_qx_[kBatchQuads], quad_qy_[kBatchQuads], quad_cell_[kBatchQuads];
+  QuadCoverage quad_coverage_[kBatchQuads], quad_passing_[kBatchQuads];
   int queued_ = 0;
-  int live_from_ = 0;  // queued quads from here on read their plane origins from cells_
   // Every triangle but the last has a queued quad: at most one per quad, plus the open one.
   BatchTriangle triangles_[kBatchQuads + 1];
   int triangle_count_ = 0;
@@ -208,7 +208,9 @@ class QuadBatcher {
   // Interpolation inputs per batch fragment.
   alignas(64) float fx_[kBatchFragments], fy_[kBatchFragments];
   alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
-  // shade_invocation's interpolation inputs per quad at pixel centres (interpolate_whole_quads).
+  // Interpolation inputs of queued quad q (add()): offset of its top-left pixel in its cell and
+  // the cell's plane origins. shade_invocation packs the shaded quads' entries to the front for
+  // interpolate_whole_quads (pixel centres), or reads them per fragment (sample shading).
   alignas(64) int32_t origin_ox_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) int32_t origin_oy_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) float origin_l1_[kBatchQuads + kQuadOriginsPadding] = {};

@@ -1,75 +1,31 @@
 // Per-tile replay of the primitive list (see tile_executor.h). For each triangle: coverage and
 // early depth per 8x8 cell (trivial reject/accept, SIMD edge evaluation, hierarchical Z), then
-// shading of the surviving quads in the tile's row-major quad order, in batches of up to 16
-// quads per functor call, then blending and quantised writes (tiler/quad_batcher.h).
+// the quad walk (quad_walk.cpp) queues the surviving quads in the tile's row-major quad order
+// for shading in batches of up to 16 quads per functor call, blending and quantised writes
+// (tiler/quad_batcher.h).
 #include "tiler/detail/tile_executor.h"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <bit>
-#include <cstring>
 #include <optional>
 
 #include "raster/cell_raster.h"
 #include "raster/texel_trace.h"
 #include "tiler/detail/hierarchical_depth.h"
 #include "tiler/detail/quad_batcher.h"
-#include "tiler/detail/quad_store_simd.h"
 #include "tiler/detail/tile_fetch.h"
 #include "tiler/detail/tile_load_store.h"
+#include "tiler/detail/tile_scratch.h"
 #include "util/error.h"
 
 namespace ontile {
-namespace {
-
-std::atomic<bool> whole_quad_rows{true};
-std::atomic<bool> whole_tiles{true};
-std::atomic<uint64_t> whole_tiles_taken{0};
-
-// The 4 lanes of the quad whose top-left pixel is bit (ly * 8 + lx) of a cell mask.
-inline uint32_t quad_lanes(CellMask m, int lx, int ly) {
-  const int bit = ly * kCellSizePx + lx;
-  return static_cast<uint32_t>(((m >> bit) & 3u) | (((m >> (bit + kCellSizePx)) & 3u) << 2));
-}
-
-// Spreads the 4 lane bits of sample s to QuadCoverage bits (lane * kMaxSamples + s): a table
-// of the 16 lane patterns for sample 0, shifted to sample s.
-constexpr std::array<QuadCoverage, 16> kSpreadLanes = [] {
-  std::array<QuadCoverage, 16> table{};
-  for (uint32_t lanes = 0; lanes < 16; ++lanes) {
-    for (int lane = 0; lane < kQuadLanes; ++lane) {
-      if ((lanes >> lane) & 1u) table[lanes] |= QuadCoverage{1} << (lane * kMaxSamples);
-    }
-  }
-  return table;
-}();
-inline QuadCoverage spread_lanes(uint32_t lanes, int s) { return kSpreadLanes[lanes & 0xFu] << s; }
-
-// Scratch reused by every tile a thread runs (no allocation in the tile loop once warm).
-struct TileScratch {
-  HierarchicalDepth hiz;
-  std::vector<CellState> cells;
-  std::vector<float> cell_depth;  // per cell, per sample, 64 depths (row-major in the cell)
-  std::vector<int> touched;       // cells the current triangle covered
-  std::vector<TileFetch> fetches;  // per subpass of the current tile
-  QuadBatcher batcher;
-};
 
 TileScratch& tile_scratch() {
   thread_local TileScratch scratch;
   return scratch;
 }
 
-// The cells of a tile: cell (i, j) has its top-left pixel at (first_x + 8 i, first_y + 8 j).
-struct TileCells {
-  int first_x = 0, first_y = 0, cells_x = 0, cells_y = 0;
-  explicit TileCells(const TileRect& r)
-      : first_x(r.x0 & ~(kCellSizePx - 1)), first_y(r.y0 & ~(kCellSizePx - 1)),
-        cells_x((r.x0 + r.width - first_x + kCellSizePx - 1) / kCellSizePx),
-        cells_y((r.y0 + r.height - first_y + kCellSizePx - 1) / kCellSizePx) {}
-  int count() const { return cells_x * cells_y; }
-};
+namespace {
 
 // Stored depth of cell `cell` as rows for HierarchicalDepth::refresh.
 void refresh_hiz(HierarchicalDepth& hiz, const TileCells& cells, int cell, const TileRect& rect,
@@ -217,118 +173,6 @@ void count_unshaded_cells(const TriangleContext& ctx, const TileScratch& scratch
   }
 }
 
-// True when the triangle covers every pixel of the tile at one sample and every pixel passed
-// early depth, or has no depth test or write to come (full-screen triangles): every cell of the tile was visited for this triangle
-// (the others hold an earlier triangle's state) and is covered and passing inside the tile.
-bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
-                       const TileScratch& scratch) {
-  const TileRect& rect = ctx.rect;
-  if (ctx.pattern.count != 1 || !ctx.whole_quads_pass_as_covered() ||
-      scratch.touched.size() != static_cast<size_t>(cells.count())) {
-    return false;
-  }
-  const int x1 = rect.x0 + rect.width, y1 = rect.y0 + rect.height;
-  for (int cj = 0; cj < cells.cells_y; ++cj) {
-    const int cy = cells.first_y + cj * kCellSizePx;
-    for (int ci = 0; ci < cells.cells_x; ++ci) {
-      const int cx = cells.first_x + ci * kCellSizePx;
-      const CellState& st = scratch.cells[cj * cells.cells_x + ci];
-      // Cells inside the tile (all of them for aligned tiles) need no mask of the tile's part.
-      const bool whole_cell = cx >= rect.x0 && cy >= rect.y0 && cx + kCellSizePx <= x1 &&
-                              cy + kCellSizePx <= y1;
-      const CellMask inside = whole_cell ? ~CellMask{0}
-                                         : cell_rect_mask(cx, cy, rect.x0, rect.y0, x1, y1);
-      if (st.covered_any != inside || st.passing[0] != inside) return false;
-    }
-  }
-  return true;
-}
-
-// Walks the triangle's quads in the tile's row-major order (the order the texture and IMR
-// models replay) and hands the surviving ones to the batcher.
-void shade_quads(const TriangleContext& ctx, const TileCells& cells, TileMemory& memory,
-                 TileCounters& counters, TileScratch& scratch) {
-  const TriangleSetup& t = ctx.tri.setup;
-  const TileRect& rect = ctx.rect;
-  const int samples = ctx.pattern.count;
-  const int x_begin = std::max(rect.x0, t.min_x & ~1);
-  const int y_begin = std::max(rect.y0, t.min_y & ~1);
-  const int x_end = std::min(rect.x0 + rect.width, t.max_x + 1);
-  const int y_end = std::min(rect.y0 + rect.height, t.max_y + 1);
-  QuadBatcher& batcher = scratch.batcher;
-  batcher.begin(ctx, memory, counters, scratch.cells.data(), scratch.cell_depth.data(),
-                scratch.cells[scratch.touched[0]].planes);
-  const int ci_begin = (x_begin - cells.first_x) / kCellSizePx;
-  const int ci_end = (x_end - 1 - cells.first_x) / kCellSizePx;
-  const bool whole_rows = samples == 1 && whole_quad_rows.load(std::memory_order_relaxed);
-  if (whole_rows && whole_tiles.load(std::memory_order_relaxed) &&
-      covers_whole_tile(ctx, cells, scratch) &&
-      batcher.add_whole_rect(rect, cells.first_x, cells.first_y, cells.cells_x)) {
-    whole_tiles_taken.fetch_add(1, std::memory_order_relaxed);
-    batcher.end_triangle();
-    return;
-  }
-  for (int qy = y_begin; qy < y_end; qy += 2) {
-    const int cj = (qy - cells.first_y) / kCellSizePx;
-    const int ly = qy & (kCellSizePx - 1);
-    const int cy = cells.first_y + cj * kCellSizePx;
-    for (int ci = ci_begin; ci <= ci_end; ++ci) {
-      const int cell = cj * cells.cells_x + ci;
-      const CellState& st = scratch.cells[cell];
-      // The quads of this cell row with a covered lane, as bits at their even columns: visited
-      // in ascending x (the tile's row-major quad order) without stepping over empty quads.
-      // Covered bits lie inside the tile and the bounding box (rasterize_cells' valid mask).
-      const uint32_t rows = static_cast<uint32_t>(st.covered_any >> (ly * kCellSizePx)) & 0xFFFFu;
-      const uint32_t either_row = (rows | (rows >> kCellSizePx)) & 0xFFu;
-      uint32_t quads = (either_row | (either_row >> 1)) & 0x55u;
-      const int cx = cells.first_x + ci * kCellSizePx;
-      if (whole_rows && rows == 0xFFFFu &&
-          (static_cast<uint32_t>(st.passing[0] >> (ly * kCellSizePx)) & 0xFFFFu) == 0xFFFFu) {
-        // Every quad of the row covers and passes its 4 lanes: what the walk below queues
-        // (coverage = passing = sample 0 of each lane, nothing rejected by depth).
-        for (int lx = 0; lx < kCellSizePx; lx += 2) {
-          batcher.add(cx + lx, qy, cell, cx, cy, kWholeQuadSample0, kWholeQuadSample0);
-        }
-        continue;
-      }
-      if (samples == 1) {
-        // One sample: the quad's lanes are its coverage (lanes_of of the spread bits).
-        const uint32_t passing_rows = static_cast<uint32_t>(st.passing[0] >> (ly * kCellSizePx)) & 0xFFFFu;
-        while (quads) {
-          const int lx = std::countr_zero(quads);
-          quads &= quads - 1;
-          const uint32_t covered = ((rows >> lx) & 3u) | (((rows >> (lx + kCellSizePx)) & 3u) << 2);
-          const uint32_t passes = ((passing_rows >> lx) & 3u) | (((passing_rows >> (lx + kCellSizePx)) & 3u) << 2);
-          if (!ctx.late_z) {
-            counters.fragments_depth_rejected += lane_count(static_cast<uint8_t>(covered & ~passes));
-            if (!passes && !ctx.fragments) continue;
-          }
-          batcher.add(cx + lx, qy, cell, cx, cy, kSpreadLanes[covered], kSpreadLanes[passes]);
-        }
-        continue;
-      }
-      while (quads) {
-        const int lx = std::countr_zero(quads);
-        quads &= quads - 1;
-        const int qx = cx + lx;
-        QuadCoverage coverage = 0, passing = 0;
-        for (int s = 0; s < samples; ++s) {
-          coverage |= spread_lanes(quad_lanes(st.covered[s], lx, ly), s);
-          passing |= spread_lanes(quad_lanes(st.passing[s], lx, ly), s);
-        }
-        if (!ctx.late_z) {
-          counters.fragments_depth_rejected +=
-              lane_count(lanes_of(coverage) & ~lanes_of(passing));
-          // A quad that failed early depth is not shaded; the IMR model still sees its accesses.
-          if (!passing && !ctx.fragments) continue;
-        }
-        batcher.add(qx, qy, cell, cx, cy, coverage, passing);
-      }
-    }
-  }
-  batcher.end_triangle();
-}
-
 }  // namespace
 
 void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int tile_index,
@@ -406,9 +250,5 @@ void execute_tile(const RenderPassDesc& pass, const ParameterBuffer& params, int
   store_tile(pass, rect, memory);
   external.tile_stored(tile_index, rect);
 }
-
-void set_whole_quad_rows(bool enabled) { whole_quad_rows.store(enabled); }
-void set_whole_tiles(bool enabled) { whole_tiles.store(enabled); }
-uint64_t whole_tiles_shaded() { return whole_tiles_taken.load(); }
 
 }  // namespace ontile

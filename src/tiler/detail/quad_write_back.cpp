@@ -1,0 +1,179 @@
+// The write half of a batch (see quad_batcher.h): per-quad writes of shaded outputs, late
+// depth and blending into tile memory in queue order, the counters, and the fragment records
+// of the IMR model; the single-sample opaque case a batch at a time on SIMD stores.
+#include <cstring>
+
+#include "raster/blend.h"
+#include "tiler/detail/quad_batcher.h"
+#include "tiler/detail/quad_store_simd.h"
+
+namespace ontile {
+namespace {
+
+// Records, per covered pixel, which samples were covered and written and what was accessed.
+void record_fragments(const TriangleContext& ctx, const BatchTriangle& triangle, int qx, int qy,
+                      QuadCoverage coverage, QuadCoverage written) {
+  const bool blend_reads = ctx.draw.blend.mode != BlendMode::Opaque || ctx.draw.blend.write_mask != 0xF;
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    const uint8_t covered = static_cast<uint8_t>(lane_coverage(coverage, lane));
+    if (!covered) continue;
+    FragmentAccess f;
+    f.triangle_ref = triangle.triangle_ref;
+    f.x_px = static_cast<uint16_t>(qx + (lane & 1));
+    f.y_px = static_cast<uint16_t>(qy + (lane >> 1));
+    f.covered_samples = covered;
+    f.written_samples = static_cast<uint8_t>(lane_coverage(written, lane));
+    f.subpass = static_cast<uint8_t>(triangle.tri->subpass);
+    if (ctx.depth_test) f.flags |= kDepthRead;
+    if (f.written_samples && ctx.depth_write) f.flags |= kDepthWritten;
+    if (f.written_samples && ctx.write_color && !ctx.subpass.color_outputs.empty()) {
+      f.flags |= kColorWritten;
+      if (blend_reads) f.flags |= kColorRead;
+    }
+    ctx.fragments->push_back(f);
+  }
+}
+
+}  // namespace
+
+void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
+  const TriangleContext& ctx = *ctx_;
+  const int qx = quad_qx_[q], qy = quad_qy_[q];
+  const QuadCoverage coverage = quad_coverage_[q], passing = quad_passing_[q];
+  if (ctx.late_z) {
+    counters_->fragments_depth_rejected += lane_count(lanes_of(coverage) & ~lanes_of(passing));
+  }
+  if (ctx.fragments) {
+    record_fragments(ctx, triangle, qx, qy, coverage, passing);
+  }
+  if (!passing) return;
+  const int samples = ctx.pattern.count;
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  const int cx = qx & ~(kCellSizePx - 1), cy = qy & ~(kCellSizePx - 1);  // cells are aligned
+  const float* z = cell_depth_ + static_cast<size_t>(quad_cell_[q]) * kMaxSamples * kCellPixels;
+  const bool late_depth_write = ctx.late_z && ctx.depth_write;
+  float* depth_plane = memory_->depth_plane();
+  for (int lane = 0; lane < kQuadLanes; ++lane) {
+    const unsigned lane_bits = lane_coverage(passing, lane);
+    if (!lane_bits) continue;
+    const int x = qx + (lane & 1), y = qy + (lane >> 1);
+    for (int s = 0; s < samples; ++s) {
+      if (!((lane_bits >> s) & 1u)) continue;
+      const size_t i = memory_->index(x - ctx.rect.x0, y - ctx.rect.y0, s);
+      if (late_depth_write) depth_plane[i] = z[s * kCellPixels + (y - cy) * kCellSizePx + (x - cx)];
+      if (ctx.write_color) {
+        const int inv = ctx.per_sample ? s : 0;
+        const BatchOutput& out = *outputs_[inv];
+        const int f = slot_[inv][q] * kQuadLanes + lane;
+        for (size_t k = 0; k < outputs.size(); ++k) {
+          const int a = outputs[k];
+          if (memory_->holds_codes(a)) {
+            if (opaque_writes_) {
+              memory_->code_plane(a)[i] = codes_[inv][k][f];
+            } else {
+              memory_->set_color(a, i, blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f),
+                                                   memory_->color(a, i)));
+            }
+            continue;
+          }
+          glm::vec4& dst = memory_->color_plane(a)[i];
+          if (opaque_writes_) {
+            dst = out.get(static_cast<int>(k), f);
+          } else {
+            dst = quantize_pixel(ctx.pass.attachments[a].format,
+                                 blend_color(ctx.draw.blend, out.get(static_cast<int>(k), f), dst));
+          }
+        }
+      }
+      ++counters_->samples_written;
+    }
+  }
+}
+
+// write_back for the common case, the batch at once: one sample per pixel, outputs already
+// quantised per batch. Depth was written by early Z, or (late Z: functors that may discard, such
+// as deferred lighting) is written here for the samples that passed the depth test and were not
+// discarded, with write_back's rejection count. Quads whose four lanes all pass are copied to
+// tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never share a pixel,
+// so within a triangle the order of writes does not matter; a later triangle's quads may
+// overwrite an earlier one's, so full quads are stored before the next triangle's.
+void QuadBatcher::write_back_single_sample() {
+  const TriangleContext& ctx = *ctx_;
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  const BatchOutput& out = *outputs_[0];
+  const bool late_z = ctx.late_z;
+  const bool late_depth_write = late_z && ctx.depth_write;
+  // A triangle's quads, written when the triangle ends (a later triangle of the batch may
+  // cover the same pixels): whole quads, and quads with some lanes written.
+  int full_quads = 0, partial_quads = 0;
+  int32_t partial_first_fragment[kBatchQuads];
+  uint32_t partial_pixel[kBatchQuads];
+  uint8_t partial_lanes[kBatchQuads];
+  const auto store_triangle = [&] {
+    for (size_t k = 0; k < outputs.size(); ++k) {
+      if (memory_->holds_codes(outputs[k])) {
+        uint32_t* const codes = memory_->code_plane(outputs[k]);
+        if (full_quads) store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, memory_->width(), codes);
+        if (partial_quads) {
+          store_quad_codes(codes_[0][k], partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), codes);
+        }
+        continue;
+      }
+      const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                        out.color[k][3]};
+      glm::vec4* const plane = memory_->color_plane(outputs[k]);
+      if (full_quads) store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(), plane);
+      if (partial_quads) {
+        store_quads(channels, partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), plane);
+      }
+    }
+    full_quads = partial_quads = 0;
+  };
+  // Locals, not members: the stores below are ints too, so members would be reloaded per quad.
+  const int triangles = triangle_count_;
+  const bool write_color = ctx.write_color;
+  const int x0 = ctx.rect.x0, y0 = ctx.rect.y0;
+  const size_t width = static_cast<size_t>(memory_->width());
+  const size_t samples = static_cast<size_t>(memory_->samples());
+  float* const depth_plane = memory_->depth_plane();
+  uint64_t rejected = 0, written = 0;
+  for (int t = 0; t < triangles; ++t) {
+    const int q_end = end_of(t);
+    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
+      const uint8_t lanes = lanes_of(quad_passing_[q]);
+      if (late_z) rejected += static_cast<uint64_t>(lane_count(lanes_of(quad_coverage_[q]) & ~lanes));
+      written += static_cast<uint64_t>(lane_count(lanes));
+      if (!lanes) continue;
+      const int qx = quad_qx_[q], qy = quad_qy_[q];
+      // TileMemory::index(qx - x0, qy - y0, 0).
+      const size_t pixel = (static_cast<size_t>(qy - y0) * width + static_cast<size_t>(qx - x0)) * samples;
+      if (late_depth_write) {
+        // The cell's depth at each passing lane, as rasterize_cells computed it.
+        // (Cells are aligned to multiples of kCellSizePx: the quad's offset in its cell.)
+        const float* z = cell_depth_ + static_cast<size_t>(quad_cell_[q]) * kMaxSamples * kCellPixels +
+                         (qy & (kCellSizePx - 1)) * kCellSizePx + (qx & (kCellSizePx - 1));
+        float* depth = depth_plane + pixel;
+        for (int lane = 0; lane < kQuadLanes; ++lane) {
+          if (!((lanes >> lane) & 1u)) continue;
+          depth[static_cast<size_t>(lane >> 1) * width + (lane & 1)] = z[(lane >> 1) * kCellSizePx + (lane & 1)];
+        }
+      }
+      if (!write_color) continue;
+      const int first = slot_[0][q] * kQuadLanes;
+      if (lanes == 0xF) {
+        full_first_fragment_[full_quads] = first;
+        full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
+        ++full_quads;
+        continue;
+      }
+      partial_first_fragment[partial_quads] = first;
+      partial_pixel[partial_quads] = static_cast<uint32_t>(pixel);
+      partial_lanes[partial_quads++] = lanes;
+    }
+    if (full_quads || partial_quads) store_triangle();
+  }
+  counters_->fragments_depth_rejected += rejected;
+  counters_->samples_written += written;
+}
+
+}  // namespace ontile
