@@ -6,9 +6,11 @@
 #include <cstring>
 #include <vector>
 
+#include "raster/pixel_format_simd.h"
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "raster/texture_batch_simd.h"
+#include "tiler/detail/tile_memory.h"
 
 namespace ontile {
 namespace {
@@ -55,17 +57,23 @@ bool texel_copy_rows_of(const FragmentShader& shader, PixelFormat target_format,
     return false;
   }
   const Texture2D::TexelView view = source->texel_view(0);
-  // Only a view whose fetched values are the decodes of its stored RGBA8 codes of the target's
-  // format passes its bytes through: the shaded path turns exactly those back into the same codes.
-  if (rgba8_codes_format(view) != target_format || view.width < width_px || view.height < height_px) {
-    return false;
-  }
-  rows.bytes = view.surface_bytes ? view.surface_bytes : view.texels8;
+  if (view.width < width_px || view.height < height_px) return false;
+  rows.format = target_format;
   rows.width = view.width;
   rows.height = view.height;
   rows.address = view.address;
   rows.bytes_per_texel = view.memory_bytes_per_texel;
-  return rows.bytes != nullptr;
+  // A view whose fetched values are the decodes of its stored RGBA8 codes of the target's
+  // format: the shaded path turns exactly those back into the same codes.
+  if (TileMemory::holds_codes(target_format)) {
+    rows.bytes = view.surface_bytes ? view.surface_bytes : view.texels8;
+    return rgba8_codes_format(view) == target_format && rows.bytes != nullptr;
+  }
+  // A render target of the target's float format, sampled in place: its texels decode as the
+  // tile's stored values do (load_surface_texel, decode_pixel), then quantise as shaded outputs.
+  rows.bytes = view.surface_bytes;
+  return rows.bytes != nullptr && view.surface_format == target_format &&
+         target_format == PixelFormat::RGBA16_FLOAT;
 }
 
 namespace {
@@ -136,6 +144,14 @@ void trace_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad
   }
 }
 
+// The texels of quads [0, quad_count) traced to the thread's sink; counted as passed through.
+void trace(const TexelCopyRows& rows, const TileRect& rect, int quad_count) {
+  if (std::vector<uint64_t>* const sink = texel_trace_detail::sink) {
+    trace_texel_quads(rows, rect, quad_count, *sink, texel_trace_detail::last_granule);
+  }
+  quads_passed_through.fetch_add(static_cast<uint64_t>(quad_count), std::memory_order_relaxed);
+}
+
 }  // namespace
 
 void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_count, uint32_t* plane,
@@ -151,10 +167,31 @@ void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_
                    plane + static_cast<size_t>(ly) * plane_width, static_cast<size_t>(plane_width),
                    2 * rest, 2);
   }
-  if (std::vector<uint64_t>* const sink = texel_trace_detail::sink) {
-    trace_texel_quads(rows, rect, quad_count, *sink, texel_trace_detail::last_granule);
+  trace(rows, rect, quad_count);
+}
+
+void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_count, glm::vec4* plane,
+                      int plane_width) {
+  static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
+  const int quads_x = rect.width / 2;
+  const float* const half = half_decode_table();
+  for (int first = 0; first < quad_count; first += quads_x) {
+    const int pixels = 2 * std::min(quads_x, quad_count - first);
+    const int ly = 2 * (first / quads_x);
+    for (int dy = 0; dy < 2; ++dy) {
+      const size_t texel = static_cast<size_t>(rect.y0 + ly + dy) * rows.width + rect.x0;
+      float* const out = &plane[static_cast<size_t>(ly + dy) * plane_width].x;
+      // load_surface_texel's table decode, then quantize_pixels' per-value rounding.
+      uint16_t codes[4 * 64];
+      for (int done = 0; done < pixels; done += 64) {
+        const int n = std::min(64, pixels - done);
+        std::memcpy(codes, rows.bytes + (texel + done) * 8, sizeof(uint16_t) * 4 * static_cast<size_t>(n));
+        for (int i = 0; i < 4 * n; ++i) out[4 * done + i] = half[codes[i]];
+        quantize_half_simd(out + 4 * done, 4 * n);
+      }
+    }
   }
-  quads_passed_through.fetch_add(static_cast<uint64_t>(quad_count), std::memory_order_relaxed);
+  trace(rows, rect, quad_count);
 }
 
 void set_texel_copy_pass_through(bool enabled) { pass_through.store(enabled); }

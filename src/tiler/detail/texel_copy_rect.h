@@ -1,9 +1,12 @@
 // Whole-tile texel copies (issue 11): a full-screen draw whose functor declares a plain texel
-// copy (FragmentShader::texel_copy_source) into an 8-bit RGBA attachment of the source's stored
-// format moves the source's bytes into the tile's code plane a row at a time, never decoding
-// them, and traces the texels the functor would have fetched, in the same order.
+// copy (FragmentShader::texel_copy_source) into an attachment of the source's stored format
+// moves the source's texels into tile memory a row at a time (8-bit RGBA: the bytes into the
+// code plane, never decoded; RGBA16F: decoded rows, quantised as shaded outputs are)
+// and traces the texels the functor would have fetched, in the same order.
 #pragma once
 #include <cstdint>
+
+#include <glm/glm.hpp>
 
 #include "memory/pass_memory.h"
 #include "raster/pixel_format.h"
@@ -12,18 +15,21 @@
 
 namespace ontile {
 
-// A texel-copy source's base level as stored bytes: 4 bytes per texel (the code plane's), rows
-// `width` texels apart, and the simulated address terms its fetches trace.
+// A texel-copy source's base level as stored bytes: texels of `format` (4 bytes for the RGBA8
+// formats, the code plane's), rows `width` texels apart, and the simulated address terms its
+// fetches trace.
 struct TexelCopyRows {
   const uint8_t* bytes = nullptr;
+  PixelFormat format = PixelFormat::RGBA8_UNORM;
   int width = 0, height = 0;
   uint64_t address = 0;          // simulated byte address of texel (0, 0)
   uint64_t bytes_per_texel = 0;  // simulated bytes per texel (the trace's stride)
 };
 
 // True, filling `rows`, when `shader` declares a texel copy whose source is uncompressed,
-// stores the codes of `target_format` (RGBA8 UNORM or sRGB) and holds every pixel of a
-// width_px x height_px pass; false otherwise (and when the path is switched off).
+// stores the codes of `target_format` (RGBA8 UNORM or sRGB) or is a surface of it sampled in
+// place (RGBA16F) and holds every pixel of a width_px x height_px pass; false otherwise (and when the
+// path is switched off).
 bool texel_copy_rows_of(const FragmentShader& shader, PixelFormat target_format, int width_px,
                         int height_px, TexelCopyRows& rows);
 
@@ -34,6 +40,9 @@ bool texel_copy_rows_of(const FragmentShader& shader, PixelFormat target_format,
 // to the thread's texel trace (raster/texel_trace.h).
 void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_count,
                       uint32_t* plane, int plane_width);
+// The same into a colour plane (RGBA16F sources).
+void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_count,
+                      glm::vec4* plane, int plane_width);
 
 // On by default; tests turn it off to compare with the shaded copy (same images and counters).
 // Set between frames only.

@@ -28,13 +28,17 @@ bool QuadBatcher::add_whole_rect(const TileRect& rect, int first_cell_x, int fir
   int qx = rect.x0, qy = rect.y0;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   TexelCopyRows copy_rows;
-  if (whole_batches > 0 && outputs.size() == 1 && memory_->holds_codes(outputs[0]) &&
+  if (whole_batches > 0 && outputs.size() == 1 &&
       texel_copy_rows_of(*ctx.draw.fragment_shader, ctx.pass.attachments[outputs[0]].format,
                          ctx.pass.width_px, ctx.pass.height_px, copy_rows)) {
     // A declared texel copy: the whole batches' quads as shade_whole_batch would write and
-    // count them (every lane active and written), the codes moved rather than decoded.
+    // count them (every lane active and written), the texels moved rather than shaded.
     const int copied = whole_batches * kBatchQuads;
-    copy_texel_quads(copy_rows, rect, copied, memory_->code_plane(outputs[0]), memory_->width());
+    if (memory_->holds_codes(outputs[0])) {
+      copy_texel_quads(copy_rows, rect, copied, memory_->code_plane(outputs[0]), memory_->width());
+    } else {
+      copy_texel_quads(copy_rows, rect, copied, memory_->color_plane(outputs[0]), memory_->width());
+    }
     counters_->fragments_shaded += static_cast<uint64_t>(copied) * kQuadLanes;
     counters_->samples_written += static_cast<uint64_t>(copied) * kQuadLanes;
     qx = rect.x0 + 2 * (copied % quads_x);
