@@ -144,6 +144,18 @@ void trace_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad
   }
 }
 
+// What the shaded copy stores for each half code: load_surface_texel's table decode, then
+// quantize_pixels' per-value rounding (quantize_half_simd), both per value, so a lookup gives
+// the same bits (NaN payloads included) at a fraction of the rounding's cost.
+const std::vector<float>& quantized_half_table() {
+  static const std::vector<float> table = [] {
+    std::vector<float> t(half_decode_table(), half_decode_table() + 65536);
+    quantize_half_simd(t.data(), static_cast<int>(t.size()));
+    return t;
+  }();
+  return table;
+}
+
 // The texels of quads [0, quad_count) traced to the thread's sink; counted as passed through.
 void trace(const TexelCopyRows& rows, const TileRect& rect, int quad_count) {
   if (std::vector<uint64_t>* const sink = texel_trace_detail::sink) {
@@ -174,20 +186,18 @@ void copy_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad_
                       int plane_width) {
   static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "a row of vec4 is a row of floats");
   const int quads_x = rect.width / 2;
-  const float* const half = half_decode_table();
+  const float* const half = quantized_half_table().data();
   for (int first = 0; first < quad_count; first += quads_x) {
     const int pixels = 2 * std::min(quads_x, quad_count - first);
     const int ly = 2 * (first / quads_x);
     for (int dy = 0; dy < 2; ++dy) {
       const size_t texel = static_cast<size_t>(rect.y0 + ly + dy) * rows.width + rect.x0;
       float* const out = &plane[static_cast<size_t>(ly + dy) * plane_width].x;
-      // load_surface_texel's table decode, then quantize_pixels' per-value rounding.
       uint16_t codes[4 * 64];
       for (int done = 0; done < pixels; done += 64) {
         const int n = std::min(64, pixels - done);
         std::memcpy(codes, rows.bytes + (texel + done) * 8, sizeof(uint16_t) * 4 * static_cast<size_t>(n));
         for (int i = 0; i < 4 * n; ++i) out[4 * done + i] = half[codes[i]];
-        quantize_half_simd(out + 4 * done, 4 * n);
       }
     }
   }
