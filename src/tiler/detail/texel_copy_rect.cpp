@@ -119,10 +119,11 @@ void trace_texel_quads(const TexelCopyRows& rows, const TileRect& rect, int quad
       *out = top_granule;
       out += top_granule != last;
       *out++ = (top + row_step) >> 6;
-      for (int q = 1; q < quads; ++q) {
-        const uint64_t quad_top = top + pair * static_cast<uint64_t>(q);
+      // The top and bottom addresses stepped together (two adds, two shifts, two stores).
+      uint64_t quad_top = top + pair, quad_bottom = top + pair + row_step;
+      for (int q = 1; q < quads; ++q, quad_top += pair, quad_bottom += pair) {
         out[2 * q - 2] = quad_top >> 6;
-        out[2 * q - 1] = (quad_top + row_step) >> 6;
+        out[2 * q - 1] = quad_bottom >> 6;
       }
       out += 2 * (quads - 1);
       last = out[-1];
