@@ -13,6 +13,8 @@
 
 namespace ontile {
 
+class Texture2D;
+
 class VertexShader {
  public:
   virtual ~VertexShader() = default;
@@ -183,6 +185,12 @@ class FragmentShader {
   // fragment: the raster core's whole-tile batches then skip zeroing them first (unwritten
   // outputs read as zero; see BatchOutput).
   virtual int outputs_always_written() const { return 0; }
+  // Non-null when the functor is a plain texel copy of this texture: output 0 of fragment (x, y)
+  // is texel (x, y) of its base level as fetched (decoded, no filter, tint or conversion), read
+  // once per fragment in lane order; no other output, discard or input. The raster core may then
+  // move the texels' stored bytes into an attachment of the same 8-bit format without decoding
+  // them (texel_copy_rect.h): the same bits and the same texel trace.
+  virtual const Texture2D* texel_copy_source() const { return nullptr; }
 };
 
 }  // namespace ontile

@@ -25,11 +25,14 @@ std::shared_ptr<const Texture2D> main_texture(const DrawContext& ctx, SamplerDes
 
 class CopyShader final : public FragmentShader {
  public:
-  CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler)
-      : source_(std::move(source)), sampler_(sampler) {}
+  // pixel_for_pixel: the source has the target's size, so the full-screen triangle's uv puts
+  // every pixel centre on its own texel (nearest, base level): a plain texel copy.
+  CopyShader(std::shared_ptr<const Texture2D> source, SamplerDesc sampler, bool pixel_for_pixel)
+      : source_(std::move(source)), sampler_(sampler), pixel_for_pixel_(pixel_for_pixel) {}
   bool batches_across_triangles() const override { return true; }  // outputs and texels per quad
   uint32_t varyings_read() const override { return kUvVaryings; }
   int outputs_always_written() const override { return 1; }  // every channel of every fragment, both paths
+  const Texture2D* texel_copy_source() const override { return pixel_for_pixel_ ? source_.get() : nullptr; }
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     // Render targets and nearest copies: the whole batch on SIMD lanes, the same texels and trace.
     if (sample_batch_nearest(*source_, sampler_, batch.varyings[FullScreenVertexShader::kUv],
@@ -49,6 +52,7 @@ class CopyShader final : public FragmentShader {
  private:
   std::shared_ptr<const Texture2D> source_;
   SamplerDesc sampler_;
+  bool pixel_for_pixel_;
 };
 
 template <Tonemapper kTonemapper>
@@ -115,7 +119,10 @@ std::unique_ptr<Shader> make_universal_blit_shader() {
                       SamplerDesc sampler;
                       auto source = main_texture(ctx, sampler);
                       f.vertex = std::make_unique<FullScreenVertexShader>();
-                      f.fragment = std::make_unique<CopyShader>(std::move(source), sampler);
+                      const bool pixel_for_pixel = source->level_count() == 1 &&
+                                                   source->width() == ctx.target_width_px &&
+                                                   source->height() == ctx.target_height_px;
+                      f.fragment = std::make_unique<CopyShader>(std::move(source), sampler, pixel_for_pixel);
                       return f;
                     }});
   shader->add_pass({"Tonemap", "", full_screen_state(), [](const DrawContext& ctx) {

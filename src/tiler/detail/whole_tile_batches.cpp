@@ -10,6 +10,7 @@
 #include "raster/pixel_quantize_simd.h"
 #include "tiler/detail/quad_batcher.h"
 #include "tiler/detail/quad_store_simd.h"
+#include "tiler/detail/texel_copy_rect.h"
 
 namespace ontile {
 
@@ -25,8 +26,27 @@ bool QuadBatcher::add_whole_rect(const TileRect& rect, int first_cell_x, int fir
   const int quads = quads_x * (rect.height / 2);
   const int whole_batches = quads / kBatchQuads;
   int qx = rect.x0, qy = rect.y0;
-  for (int batch = 0; batch < whole_batches; ++batch) {
-    shade_whole_batch(rect, qx, qy, first_cell_x, first_cell_y, cells_x);
+  const std::vector<int>& outputs = ctx.subpass.color_outputs;
+  TexelCopyRows copy_rows;
+  if (whole_batches > 0 && outputs.size() == 1 &&
+      texel_copy_rows_of(*ctx.draw.fragment_shader, ctx.pass.attachments[outputs[0]].format,
+                         ctx.pass.width_px, ctx.pass.height_px, copy_rows)) {
+    // A declared texel copy: the whole batches' quads as shade_whole_batch would write and
+    // count them (every lane active and written), the texels moved rather than shaded.
+    const int copied = whole_batches * kBatchQuads;
+    if (memory_->holds_codes(outputs[0])) {
+      copy_texel_quads(copy_rows, rect, copied, memory_->code_plane(outputs[0]), memory_->width());
+    } else {
+      copy_texel_quads(copy_rows, rect, copied, memory_->color_plane(outputs[0]), memory_->width());
+    }
+    counters_->fragments_shaded += static_cast<uint64_t>(copied) * kQuadLanes;
+    counters_->samples_written += static_cast<uint64_t>(copied) * kQuadLanes;
+    qx = rect.x0 + 2 * (copied % quads_x);
+    qy = rect.y0 + 2 * (copied / quads_x);
+  } else {
+    for (int batch = 0; batch < whole_batches; ++batch) {
+      shade_whole_batch(rect, qx, qy, first_cell_x, first_cell_y, cells_x);
+    }
   }
   // The rest is what add() would leave queued at the triangle's end.
   for (int q = whole_batches * kBatchQuads; q < quads; ++q) {
