@@ -59,6 +59,14 @@ class CelShader final : public FragmentShader {
 
   // Per-fragment arithmetic and per-quad texture reads (lit, then shadow map, quad by quad).
   bool batches_across_triangles() const override { return true; }
+  // The view normal (every output mask), the world normal for the colour and the UV for its
+  // maps: the raster core interpolates only these (not the world position or the tangent).
+  uint32_t varyings_read() const override {
+    constexpr uint32_t kViewNormalBits = 7u << ToonVertexShader::kViewNormal;
+    constexpr uint32_t kNormalBits = 7u << ToonVertexShader::kNormal, kUvBits = 3u << ToonVertexShader::kUv;
+    constexpr bool kColorOutput = (kOutputs & ToonOutput::kColor) != 0u;
+    return kViewNormalBits | (kColorOutput ? kNormalBits : 0u) | (kColorOutput && kTextures ? kUvBits : 0u);
+  }
 
   // Colour (shade_color) and write_toon_normal_and_border fill every padded fragment.
   int outputs_always_written() const override { return toon_output_count(kOutputs); }

@@ -68,6 +68,15 @@ class MatCapShader final : public FragmentShader {
 
   // Per-fragment arithmetic; texture reads quad by quad (normal map, MatCap, base map).
   bool batches_across_triangles() const override { return true; }
+  // The view normal; for the colour the UV, and with kNormalMap the world normal and tangent:
+  // the raster core interpolates only these (not the world position).
+  uint32_t varyings_read() const override {
+    constexpr uint32_t kViewNormalBits = 7u << ToonVertexShader::kViewNormal;
+    constexpr uint32_t kUvBits = 3u << ToonVertexShader::kUv;
+    constexpr uint32_t kNormalMapBits = (7u << ToonVertexShader::kNormal) | (15u << ToonVertexShader::kTangent);
+    if constexpr ((kOutputs & ToonOutput::kColor) == 0u) return kViewNormalBits;
+    return kViewNormalBits | kUvBits | (kNormalMap ? kNormalMapBits : 0u);
+  }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;

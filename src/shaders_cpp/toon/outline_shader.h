@@ -70,6 +70,7 @@ class OutlineColorShader final : public FragmentShader {
 
   // Constants per fragment, no texture reads.
   bool batches_across_triangles() const override { return true; }
+  uint32_t varyings_read() const override { return 0; }  // constants only
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     const int n = batch.padded_fragment_count();

@@ -39,6 +39,13 @@ class ToonEnvShader final : public FragmentShader {
 
   // Per-fragment arithmetic; texture reads quad by quad (base map, then environment per lane).
   bool batches_across_triangles() const override { return true; }
+  // The view normal; for the colour the UV and (world-space lookups) the world normal: the
+  // raster core interpolates only these.
+  uint32_t varyings_read() const override {
+    constexpr uint32_t kViewNormalBits = 7u << ToonVertexShader::kViewNormal;
+    constexpr uint32_t kColorBits = (3u << ToonVertexShader::kUv) | (kCameraBased ? 0u : 7u << ToonVertexShader::kNormal);
+    return kViewNormalBits | ((kOutputs & ToonOutput::kColor) != 0u ? kColorBits : 0u);
+  }
 
   void shade_batch(const FragmentBatch& batch, BatchOutput& out) const override {
     alignas(64) BatchVec3 view_normal;
