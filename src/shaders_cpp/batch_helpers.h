@@ -60,7 +60,7 @@ inline void batch_set3(BatchVec3& v, int f, glm::vec3 value) {
 // Varyings [first, first + 3) made unit length (a zero vector gives +Z) and negated on back
 // faces, for fragments [0, n) rounded up to whole vectors (n <= kBatchFragments; every array is
 // kBatchFragments long): toon_unit_normal's operations per fragment on SIMD lanes
-// (unit_normal_lanes.cpp), so the bits match it and shading_normal on every target.
+// (unit_normal_lanes.cpp), so the bits match it on every target and with every compiler.
 void batch_unit_normals(const FragmentBatch& batch, int first, int n, BatchVec3& out);
 
 }  // namespace ontile

@@ -34,8 +34,8 @@ HWY_INLINE void unit_lanes(DF df, hwy::HWY_NAMESPACE::Vec<DF>& x, hwy::HWY_NAMES
   z = hn::IfThenElse(has_length, hn::Div(z, divisor), hn::Set(df, 1.0f));
 }
 
-// Fragments [f, f + Lanes) of varyings [first, first + 3) made unit length, times the facing
-// sign (x * -1 is exactly -x): toon_unit_normal per lane.
+// Fragments [f, f + Lanes) of varyings [first, first + 3) made unit length and negated on back
+// faces: toon_unit_normal per lane.
 template <class DF>
 HWY_INLINE void unit_normal_at(DF df, const FragmentBatch& batch, int first, size_t f,
                                hwy::HWY_NAMESPACE::Vec<DF>& x, hwy::HWY_NAMESPACE::Vec<DF>& y,
@@ -45,10 +45,14 @@ HWY_INLINE void unit_normal_at(DF df, const FragmentBatch& batch, int first, siz
   y = hn::Load(df, batch.varyings[first + 1] + f);
   z = hn::Load(df, batch.varyings[first + 2] + f);
   unit_lanes(df, x, y, z);
-  const auto facing = hn::Set(df, batch.front_facing ? 1.0f : -1.0f);
-  x = hn::Mul(x, facing);
-  y = hn::Mul(y, facing);
-  z = hn::Mul(z, facing);
+  // Negated (the sign bit flipped, as toon_unit_normal's -n) rather than multiplied by -1: the
+  // two differ only for NaN, whose sign x * -1 keeps, and GCC folds a multiplication by -1 into
+  // a negation where clang does not, so the product gave NaN normals each compiler's sign.
+  if (!batch.front_facing) {
+    x = hn::Neg(x);
+    y = hn::Neg(y);
+    z = hn::Neg(z);
+  }
 }
 
 }  // namespace HWY_NAMESPACE

@@ -1,6 +1,6 @@
 // The batched functors' per-fragment helpers on SIMD lanes against the scalar code they stand
-// for, bit for bit on every SIMD target: batch_unit_normals against toon_unit_normal, and the
-// cel shader's lit/shadow mix against cel_shadow_factor and glm::mix, and the gradient sky against
+// for, bit for bit on every SIMD target: batch_unit_normals against toon_unit_normal, and the cel
+// shader's lit/shadow mix against cel_shadow_factor and glm::mix, and the gradient sky against
 // its per-fragment formula.
 #include <gtest/gtest.h>
 
@@ -59,6 +59,7 @@ TEST(FragmentLanes, UnitNormalsMatchToonUnitNormalOnEveryTarget) {
       batch_unit_normals(batch, 4, n, normal);
       for (int f = 0; f < n; ++f) {
         const glm::vec3 in(batch.varyings[4][f], batch.varyings[5][f], batch.varyings[6][f]);
+        // NaN results included: the back-face sign is a negation, also for a NaN.
         const glm::vec3 expected = toon_unit_normal(in, batch.front_facing);
         for (int c = 0; c < 3; ++c) {
           ASSERT_EQ(bits(normal[c][f]), bits(expected[c])) << target << " fragment " << f << " component " << c;
