@@ -7,6 +7,7 @@
 #include <hwy/highway.h>
 
 #include "shaders_cpp/lambert_lanes.h"
+#include "shaders_cpp/unit_normal_lanes-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -21,17 +22,19 @@ void light_lanes(const float* nx, const float* ny, const float* nz, const Lamber
                  const float (*albedo)[kBatchFragments], const float (*emissive)[kBatchFragments],
                  float (*out)[kBatchFragments], int count) {
   const DF df;
-  const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), facing = hn::Set(df, k.facing);
+  const VF zero = hn::Zero(df);
   const VF lx = hn::Set(df, k.to_light[0]), ly = hn::Set(df, k.to_light[1]), lz = hn::Set(df, k.to_light[2]);
+  const bool back_face = k.facing < 0.0f;
   for (size_t f = 0; f < static_cast<size_t>(count); f += hn::Lanes(df)) {
-    const VF x0 = hn::LoadU(df, nx + f), y0 = hn::LoadU(df, ny + f), z0 = hn::LoadU(df, nz + f);
-    const VF len = hn::Sqrt(hn::Add(hn::Add(hn::Mul(x0, x0), hn::Mul(y0, y0)), hn::Mul(z0, z0)));
-    // Divide by 1 where the length is 0 (or NaN), then select the default normal there.
-    const auto has_length = hn::Gt(len, zero);
-    const VF divisor = hn::IfThenElse(has_length, len, one);
-    const VF x = hn::Mul(hn::IfThenElse(has_length, hn::Div(x0, divisor), zero), facing);
-    const VF y = hn::Mul(hn::IfThenElse(has_length, hn::Div(y0, divisor), zero), facing);
-    const VF z = hn::Mul(hn::IfThenElse(has_length, hn::Div(z0, divisor), one), facing);
+    VF x = hn::LoadU(df, nx + f), y = hn::LoadU(df, ny + f), z = hn::LoadU(df, nz + f);
+    unit_lanes(df, x, y, z);  // toon_unit_normal's operations (unit_normal_lanes-inl.h)
+    // Negated on back faces; the scalar formula multiplies by -1, which differs only in the sign
+    // of a NaN normal, whose N.L is clamped to 0 below either way.
+    if (back_face) {
+      x = hn::Neg(x);
+      y = hn::Neg(y);
+      z = hn::Neg(z);
+    }
     const VF dot = hn::Add(hn::Add(hn::Mul(x, lx), hn::Mul(y, ly)), hn::Mul(z, lz));
     const VF n_dot_l = hn::IfThenElse(hn::Gt(dot, zero), dot, zero);
     for (int c = 0; c < 3; ++c) {
