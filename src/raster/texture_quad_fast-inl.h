@@ -82,14 +82,15 @@ struct FastLevelPair {
   }
 };
 
-// Appends a trilinear quad's granules when every footprint is regular: per level, each row's
-// two texels share a granule and the two rows do not. Levels share no granule (prepare), so
-// nothing merges across footprints, and the trace takes t00, t01 of level d, then of level
-// d + 1, lane by lane: texture_quad_trace-inl.h's regular case. top, bottom: per pair, the
-// granule of t00 and of t01 relative to the pair's level base.
-HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t top[kPairs],
-                                        const int32_t bottom[kPairs], std::vector<uint64_t>& trace,
-                                        TraceStaging& staging) {
+// Appends a quad's granules when every footprint is regular: per level, each row's two texels
+// share a granule and the two rows do not; with one level, no lane's first granule also repeats
+// the lane before's last. Levels share no granule (prepare), so nothing merges across
+// footprints, and the trace takes t00, t01 lane by lane, of level d then (kLevels 2) of level
+// d + 1: texture_quad_trace-inl.h's regular case. top, bottom: per pair, the granule of t00 and
+// of t01 relative to the pair's level base.
+template <int kLevels>
+HWY_INLINE void stage_regular(const FastLevelPair& pair, const int32_t top[kPairs], const int32_t bottom[kPairs],
+                              std::vector<uint64_t>& trace, TraceStaging& staging) {
   if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
   const uint64_t first = pair.granule_base[0] + static_cast<uint32_t>(top[0]);
   const int kept_first = first != staging.last;
@@ -104,10 +105,14 @@ HWY_INLINE void stage_regular_trilinear(const FastLevelPair& pair, const int32_t
     return hn::Add(base, hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, relative))));
   };
   for (size_t i = 0; i < static_cast<size_t>(kLanes); i += hn::Lanes(d64)) {
-    hn::StoreInterleaved4(granule(top + i, base0), granule(bottom + i, base0), granule(top + kLanes + i, base1),
-                          granule(bottom + kLanes + i, base1), d64, sequence + 4 * i);
+    if constexpr (kLevels == 2) {
+      hn::StoreInterleaved4(granule(top + i, base0), granule(bottom + i, base0), granule(top + kLanes + i, base1),
+                            granule(bottom + kLanes + i, base1), d64, sequence + 4 * i);
+    } else {
+      hn::StoreInterleaved2(granule(top + i, base0), granule(bottom + i, base0), d64, sequence + 2 * i);
+    }
   }
-  constexpr int kCount = 4 * kLanes;
+  constexpr int kCount = 2 * kLevels * kLanes;
   staging.count += kept_first + kCount - 1;
   staging.last = sequence[kCount - 1];
 }
@@ -149,7 +154,7 @@ HWY_INLINE void stage_footprints(const FastLevelPair& pair, const int32_t relati
   if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
   const uint64_t first = pair.granule_base[0] + static_cast<uint32_t>(relative[0][0]);
   const int kept_first = first != staging.last;
-  // As stage_regular_trilinear: the first granule goes to the slot before the new ones.
+  // As stage_regular: the first granule goes to the slot before the new ones.
   uint64_t* const sequence = staging.granules + staging.count + kept_first;
   int count = 0;
 #if HWY_TARGET != HWY_SCALAR
@@ -222,31 +227,6 @@ HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, f
   return hn::AllTrue(d, tame);
 }
 
-// Appends a single-level quad's granules when every footprint is regular (each row's two texels
-// share a granule, the two rows do not) and no lane's first granule repeats the lane before's
-// last: the trace takes t00, t01 lane by lane (texture_quad_trace-inl.h's regular case).
-HWY_INLINE void stage_regular_single(const FastLevelPair& level, const int32_t top[kPairs],
-                                     const int32_t bottom[kPairs], std::vector<uint64_t>& trace,
-                                     TraceStaging& staging) {
-  if (staging.count > TraceStaging::kCapacity - TraceStaging::kMaxPerQuad) staging.flush(trace);
-  const uint64_t first = level.granule_base[0] + static_cast<uint32_t>(top[0]);
-  const int kept_first = first != staging.last;
-  uint64_t* const sequence = staging.granules + staging.count + kept_first;
-  const hn::CappedTag<uint64_t, kLanes> d64;
-  const hn::Rebind<int64_t, decltype(d64)> ds64;
-  const hn::Rebind<int32_t, decltype(d64)> d32;
-  const auto base = hn::Set(d64, level.granule_base[0]);
-  const auto granule = [&](const int32_t* relative) {
-    return hn::Add(base, hn::BitCast(d64, hn::PromoteTo(ds64, hn::LoadU(d32, relative))));
-  };
-  for (size_t i = 0; i < static_cast<size_t>(kLanes); i += hn::Lanes(d64)) {
-    hn::StoreInterleaved2(granule(top + i), granule(bottom + i), d64, sequence + 2 * i);
-  }
-  constexpr int kCount = 2 * kLanes;
-  staging.count += kept_first + kCount - 1;
-  staging.last = sequence[kCount - 1];
-}
-
 // One quad on a prepared pair (a trilinear job) or level (in.level_count 1): channel c of lane i
 // to out[c][i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
 // texel coordinate reaches 2^24 (the general path's limit, checked the same way; skipped when
@@ -314,7 +294,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
       }
     } else if (in.level_count == 2) {
       if (regular) {
-        stage_regular_trilinear(pair, relative[0], relative[2], *in.trace, *staging);
+        stage_regular<2>(pair, relative[0], relative[2], *in.trace, *staging);
       } else {
         stage_footprints(pair, relative, 2, *in.trace, *staging);
       }
@@ -322,7 +302,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
       // One level: a lane's first granule may repeat the lane before's last.
       for (int lane = 1; lane < kLanes; ++lane) regular &= relative[0][lane] != relative[3][lane - 1];
       if (regular) {
-        stage_regular_single(pair, relative[0], relative[2], *in.trace, *staging);
+        stage_regular<1>(pair, relative[0], relative[2], *in.trace, *staging);
       } else {
         stage_footprints(pair, relative, 1, *in.trace, *staging);
       }
