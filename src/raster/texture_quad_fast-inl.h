@@ -238,7 +238,7 @@ HWY_INLINE hn::Vec<D> lane_coordinates(D d, const float* lanes, size_t i) {
 }
 
 // One quad on a prepared pair (a trilinear job) or level (in.level_count 1): channel c of lane i
-// to out[c][i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
+// to out[c][offset + i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
 // texel coordinate reaches 2^24 (the general path's limit, checked the same way; skipped when
 // `tame`, coordinates_tame of the quad's block). `in`: the job (blend, decode tables, trace; its
 // levels are pair's). u, v: the 4 lanes' coordinates (each level's pairs take them).
@@ -246,7 +246,7 @@ HWY_INLINE hn::Vec<D> lane_coordinates(D d, const float* lanes, size_t i) {
 // with blend 0, which gives the single-level filter's bits (v (1 - 0) + w 0 = v for the finite,
 // non-negative filtered values), so the hot loop carries one copy of the code.
 HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bool tame, const float* u,
-                            const float* v, float* const out[4], TraceStaging* staging) {
+                            const float* v, float* const out[4], size_t offset, TraceStaging* staging) {
   const hn::CappedTag<float, kPairs> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
@@ -271,7 +271,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
     const auto x_floor = hn::Floor(x), y_floor = hn::Floor(y);
     hn::Store(hn::Sub(x, x_floor), d, a + i);
     hn::Store(hn::Sub(y, y_floor), d, b + i);
-    const auto x0 = hn::ConvertTo(di, x_floor), y0 = hn::ConvertTo(di, y_floor);
+    const auto x0 = truncate_in_range(di, x_floor), y0 = truncate_in_range(di, y_floor);
     const auto width_mask = hn::Load(di, pair.width_mask + i), height_mask = hn::Load(di, pair.height_mask + i);
     const auto row = hn::Load(di, pair.width + i);
     const auto xa = hn::And(x0, width_mask), xb = hn::And(hn::Add(x0, one), width_mask);
@@ -318,7 +318,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
       }
     }
   }
-  filter_quad<2>(d, in, kPairs, packed, a, b, out);
+  filter_quad<2>(d, in, kPairs, packed, a, b, out, offset);
   return true;
 }
 

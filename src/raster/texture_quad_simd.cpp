@@ -75,7 +75,7 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
       }
     }
   }
-  filter_quad<kLevels>(d8, in, pairs, packed, a, b, out);
+  filter_quad<kLevels>(d8, in, pairs, packed, a, b, out, 0);
   return true;
 }
 
@@ -254,7 +254,6 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
             job.levels[0] = &read.levels[0];
           }
         }
-        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         // The common case on its fast path: level pairs for trilinear jobs, single levels for the
         // rest, each prepared when a read's job moves to another level.
         FastLevelPair& prepared = job.level_count == 2 ? state.fast_pair : state.fast_single;
@@ -267,7 +266,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
           }
         }
         if (prepared.usable) {
-          if (!sample_fast(prepared, job, state.tame, quad_u, quad_v, out, &staging)) {
+          if (!sample_fast(prepared, job, state.tame, quad_u, quad_v, read.out, static_cast<size_t>(f0), &staging)) {
             return finish(q * batch.read_count + r);
           }
           continue;
@@ -283,6 +282,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
           u[pair] = quad_u[pair % kLanes];
           v[pair] = quad_v[pair % kLanes];
         }
+        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         if (!sample_job(job, state.facts, u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
       if constexpr (kAfterQuad) {  // the shader's own reads of the quad, staged in order
