@@ -227,16 +227,26 @@ HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, f
   return hn::AllTrue(d, tame);
 }
 
+// Pairs i .. i + Lanes(d) of the quad's coordinates `lanes` (4 floats, 16-byte aligned): the
+// lanes' own, level after level, so an 8-lane vector takes them twice in one broadcast load.
+template <class D>
+HWY_INLINE hn::Vec<D> lane_coordinates(D d, const float* lanes, size_t i) {
+#if HWY_TARGET != HWY_SCALAR
+  if constexpr (hn::MaxLanes(D()) >= static_cast<size_t>(kPairs)) return hn::LoadDup128(d, lanes);
+#endif
+  return hn::LoadU(d, lanes + i % kLanes);
+}
+
 // One quad on a prepared pair (a trilinear job) or level (in.level_count 1): channel c of lane i
-// to out[c][i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
+// to out[c][offset + i], the trace staged. False, touching nothing the caller keeps, when |u|, |v| or a
 // texel coordinate reaches 2^24 (the general path's limit, checked the same way; skipped when
 // `tame`, coordinates_tame of the quad's block). `in`: the job (blend, decode tables, trace; its
-// levels are pair's). u, v: the 4 lanes' coordinates, twice (pairs).
+// levels are pair's). u, v: the 4 lanes' coordinates (each level's pairs take them).
 // One instance serves both: a single level runs the trilinear filter on its duplicated level
 // with blend 0, which gives the single-level filter's bits (v (1 - 0) + w 0 = v for the finite,
 // non-negative filtered values), so the hot loop carries one copy of the code.
 HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bool tame, const float* u,
-                            const float* v, float* const out[4], TraceStaging* staging) {
+                            const float* v, float* const out[4], size_t offset, TraceStaging* staging) {
   const hn::CappedTag<float, kPairs> d;
   const hn::RebindToSigned<decltype(d)> di;
   const size_t n = hn::Lanes(d);
@@ -250,7 +260,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
   bool regular = true;
   for (size_t i = 0; i < static_cast<size_t>(kPairs); i += n) {
     // footprints' operations (OpenGL 4.6 eq. 8.10), with wrap_axis' repeat on power-of-two sizes.
-    const auto uu = hn::LoadU(d, u + i), vv = hn::LoadU(d, v + i);
+    const auto uu = lane_coordinates(d, u, i), vv = lane_coordinates(d, v, i);
     const auto x = hn::Sub(hn::Mul(uu, hn::Load(d, pair.width_f + i)), half);
     const auto y = hn::Sub(hn::Mul(vv, hn::Load(d, pair.height_f + i)), half);
     if (!tame) {
@@ -261,7 +271,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
     const auto x_floor = hn::Floor(x), y_floor = hn::Floor(y);
     hn::Store(hn::Sub(x, x_floor), d, a + i);
     hn::Store(hn::Sub(y, y_floor), d, b + i);
-    const auto x0 = hn::ConvertTo(di, x_floor), y0 = hn::ConvertTo(di, y_floor);
+    const auto x0 = truncate_in_range(di, x_floor), y0 = truncate_in_range(di, y_floor);
     const auto width_mask = hn::Load(di, pair.width_mask + i), height_mask = hn::Load(di, pair.height_mask + i);
     const auto row = hn::Load(di, pair.width + i);
     const auto xa = hn::And(x0, width_mask), xb = hn::And(hn::Add(x0, one), width_mask);
@@ -308,7 +318,7 @@ HWY_INLINE bool sample_fast(const FastLevelPair& pair, const QuadSample8& in, bo
       }
     }
   }
-  filter_quad<2>(d, in, kPairs, packed, a, b, out);
+  filter_quad<2>(d, in, kPairs, packed, a, b, out, offset);
   return true;
 }
 

@@ -53,12 +53,13 @@ HWY_INLINE hn::Vec<D> filter_channel(D d, const float* table, const hn::Vec<hn::
 }
 
 // The quad's 4 channels from its pairs' texels packed[t][pair] and weights a, b: filtered per
-// level, level 1 blended in with weight in.blend (two levels), channel c of lane i to out[c][i].
+// level, level 1 blended in with weight in.blend (two levels), channel c of lane i to
+// out[c][offset + i].
 // Where one vector holds every pair (8 lanes), a channel stays in registers from the decode to
 // the store, one channel at a time; elsewhere the filter runs on the pairs a vector at a time.
 template <int kLevels, class D>
 HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int32_t packed[4][kPairs],
-                            const float* a, const float* b, float* const out[4]) {
+                            const float* a, const float* b, float* const out[4], size_t offset) {
   const hn::RebindToUnsigned<D> du8;
   const auto one8 = hn::Set(d8, 1.0f);
 #if HWY_TARGET != HWY_SCALAR  // (which has no UpperHalf)
@@ -73,7 +74,7 @@ HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int
     const auto store = [&](hn::Vec<D> filtered, float* row) {
       auto value = hn::LowerHalf(dh, filtered);
       if (kLevels == 2) value = hn::Add(hn::Mul(value, one_w), hn::Mul(hn::UpperHalf(dh, filtered), w));
-      hn::StoreU(value, dh, row);
+      hn::StoreU(value, dh, row + offset);
     };
     store(filter_channel<0>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[0]);
     store(filter_channel<8>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[1]);
@@ -103,7 +104,7 @@ HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int
           const auto w = hn::Set(d, in.blend);
           value = hn::Add(hn::Mul(value, hn::Sub(one, w)), hn::Mul(hn::Load(d, filtered[c] + kLanes + i), w));
         }
-        hn::StoreU(value, d, out[c] + i);
+        hn::StoreU(value, d, out[c] + offset + i);
       }
     }
   }

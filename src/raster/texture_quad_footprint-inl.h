@@ -27,6 +27,21 @@ constexpr int kLanes = 4;
 constexpr int kPairs = 2 * kLanes;  // (level, lane) pairs, laid out level * 4 + lane
 constexpr float kMaxExactTexelCoord = 16777216.0f;  // as texture.cpp
 
+// ConvertTo(di, v) for lanes known to be below 2^31 in magnitude (texel coordinates under 2^24):
+// on x86 the bare truncating conversion, without the fix-up Highway adds for lanes that overflow
+// (four more instructions a vector), so the same integers.
+template <class DI, class VF>
+HWY_INLINE hn::Vec<DI> truncate_in_range(DI di, VF v) {
+#if HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
+  if constexpr (sizeof(v.raw) == 32) {
+    return hn::Vec<DI>{_mm256_cvttps_epi32(v.raw)};
+  } else if constexpr (sizeof(v.raw) == 16) {
+    return hn::Vec<DI>{_mm_cvttps_epi32(v.raw)};
+  }
+#endif
+  return hn::ConvertTo(di, v);
+}
+
 // The two texel columns (or rows) of footprints starting at `first` along an axis whose last
 // texel is `last` (per lane: a pair's level), wrapped as wrap_texel_index does: identity inside
 // the level, a mask for repeat on power-of-two sizes (`pow2`: every level's), a clamp for
@@ -124,8 +139,8 @@ HWY_INLINE bool footprints(const QuadSample8& in, const LevelFacts& facts, const
                                hn::And(hn::Lt(hn::Abs(vv), limit), hn::Lt(hn::Abs(y), limit)));
     if (!hn::AllTrue(d, exact)) return false;
     const auto x_floor = hn::Floor(x), y_floor = hn::Floor(y);
-    hn::Store(hn::ConvertTo(di, x_floor), di, i0 + i);
-    hn::Store(hn::ConvertTo(di, y_floor), di, j0 + i);
+    hn::Store(truncate_in_range(di, x_floor), di, i0 + i);
+    hn::Store(truncate_in_range(di, y_floor), di, j0 + i);
     hn::Store(hn::Sub(x, x_floor), d, a_out + i);
     hn::Store(hn::Sub(y, y_floor), d, b_out + i);
   }

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <new>
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -74,7 +75,7 @@ HWY_INLINE bool sample_one(const QuadSample8& in, const LevelFacts& facts, const
       }
     }
   }
-  filter_quad<kLevels>(d8, in, pairs, packed, a, b, out);
+  filter_quad<kLevels>(d8, in, pairs, packed, a, b, out, 0);
   return true;
 }
 
@@ -108,23 +109,37 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
 template <bool kAfterQuad>
 int sample_quad_batch(const QuadBatch8& batch, int first) {
   const hn::CappedTag<float, kLanes> d;
-  QuadSample8 jobs[QuadBatch8::kMaxReads];
-  // facts[r]: of read r's levels facts_level[r] and the one after it (when there is one).
-  LevelFacts facts[QuadBatch8::kMaxReads];
-  const Texture2D::Level* facts_level[QuadBatch8::kMaxReads];
-  // Read r's level pair of its last trilinear job and level of its last single-level job,
-  // prepared for sample_fast.
-  FastLevelPair fast_pair[QuadBatch8::kMaxReads], fast_single[QuadBatch8::kMaxReads];
+  constexpr int kBlockQuads = kLanes;
+  // What the driver keeps per read, in one place so that the per-quad loop steps one pointer
+  // per read (separate arrays per field cost a spilled induction pointer each).
+  struct ReadState {
+    QuadSample8 job;
+    // The level pair of the read's last trilinear job and the level of its last single-level
+    // job, prepared for sample_fast.
+    FastLevelPair fast_pair, fast_single;
+    // Of the levels facts_level and the one after it (when there is one).
+    LevelFacts facts;
+    const Texture2D::Level* facts_level = nullptr;
+    // The block's quads: lambda, level d, weight of level d + 1 (see below).
+    alignas(16) float lambda[kBlockQuads];
+    alignas(16) int32_t level[kBlockQuads];
+    alignas(16) float blend[kBlockQuads];
+    bool tame = false;  // coordinates_tame of the block
+  };
+  // Only the batch's reads are constructed (a batch call is short: about 14 quads in the atrium
+  // frame, and initialising all kMaxReads states cost more than a quad's driver work).
+  alignas(ReadState) unsigned char state_storage[sizeof(ReadState) * QuadBatch8::kMaxReads];
+  ReadState* const states = reinterpret_cast<ReadState*>(state_storage);
   for (int r = 0; r < batch.read_count; ++r) {
     const BatchRead8& read = batch.reads[r];
-    facts_level[r] = nullptr;
-    jobs[r].wrap_u = read.wrap_u;
-    jobs[r].wrap_v = read.wrap_v;
-    jobs[r].rgb_decode = read.rgb_decode;
-    jobs[r].alpha_decode = read.alpha_decode;
-    jobs[r].trace = batch.trace;
-    jobs[r].last_granule = batch.last_granule;
-    jobs[r].trace_repeats = read.trace_repeats;
+    QuadSample8& job = (new (&states[r]) ReadState)->job;
+    job.wrap_u = read.wrap_u;
+    job.wrap_v = read.wrap_v;
+    job.rgb_decode = read.rgb_decode;
+    job.alpha_decode = read.alpha_decode;
+    job.trace = batch.trace;
+    job.last_granule = batch.last_granule;
+    job.trace_repeats = read.trace_repeats;
   }
   TraceStaging staging;
   if (batch.trace) staging.last = *batch.last_granule;
@@ -142,7 +157,6 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
   // |x| < inf is false for NaN and infinities), then quad_lambda's rho = max(|d(uv)/dx|,
   // |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7) for each read, one quad per lane: the
   // scalar operations on lanes, std::max as a compare and select.
-  constexpr int kBlockQuads = kLanes;
   for (int block = first_quad; block < batch.quad_count; block += kBlockQuads) {
     const int quads = std::min(kBlockQuads, batch.quad_count - block);
     alignas(64) float block_u[kBlockQuads * kLanes], block_v[kBlockQuads * kLanes];  // [quad][lane]
@@ -180,57 +194,45 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
         hn::Store(hn::IfThenElse(hn::Lt(rho_x, rho_y), rho_y, rho_x), d, rho[r] + i);
       }
     }
-    // lambda[r][j] = log2_exact(rho) + lod_bias on lanes, or per quad where a lane's rho is not a
+    // lambda = log2_exact(rho) + lod_bias on lanes, or per quad where a lane's rho is not a
     // normal positive float. Quads past the batch's end take rho 1. Then linear8_job's level
     // selection on lanes for Linear and None mipmaps: level d and the weight of level d + 1
     // (0: level d alone); Nearest selects per quad below.
-    alignas(16) float lambda_block[QuadBatch8::kMaxReads][kBlockQuads];
-    alignas(16) int32_t level_block[QuadBatch8::kMaxReads][kBlockQuads];
-    alignas(16) float blend_block[QuadBatch8::kMaxReads][kBlockQuads];
     for (int r = 0; r < batch.read_count; ++r) {
       const BatchRead8& read = batch.reads[r];
+      ReadState& state = states[r];
       for (int j = quads; j < kBlockQuads; ++j) rho[r][j] = 1.0f;
-      if (!log2_exact_lanes(rho[r], read.lod_bias, lambda_block[r])) {
-        for (int j = 0; j < kBlockQuads; ++j) lambda_block[r][j] = log2_exact(rho[r][j]) + read.lod_bias;
+      if (!log2_exact_lanes(rho[r], read.lod_bias, state.lambda)) {
+        for (int j = 0; j < kBlockQuads; ++j) state.lambda[j] = log2_exact(rho[r][j]) + read.lod_bias;
       }
+      const Texture2D::Level& base = read.levels[0];
+      state.tame = coordinates_tame(block_u, block_v, kBlockQuads * kLanes, static_cast<float>(base.width),
+                                    static_cast<float>(base.height));
       if (read.mipmap_mode == MipmapMode::Nearest) continue;
       const hn::RebindToSigned<decltype(d)> di;
       for (size_t i = 0; i < static_cast<size_t>(kBlockQuads); i += hn::Lanes(d)) {
-        const auto lambda = hn::Load(d, lambda_block[r] + i);
+        const auto lambda = hn::Load(d, state.lambda + i);
         // std::min(lambda, max_level) is lambda unless max_level < lambda; NaN is not > 0.
         const auto mipmapped = read.mipmap_mode == MipmapMode::Linear ? hn::Gt(lambda, hn::Zero(d)) : hn::FirstN(d, 0);
         const auto max_level = hn::Set(d, read.max_level);
         const auto clamped = hn::IfThenElse(hn::Lt(max_level, lambda), max_level, lambda);
         const auto level = hn::Floor(clamped);
-        hn::Store(hn::IfThenElseZero(hn::RebindMask(di, mipmapped), hn::ConvertTo(di, level)), di, level_block[r] + i);
-        hn::Store(hn::IfThenElseZero(mipmapped, hn::Sub(clamped, level)), d, blend_block[r] + i);
+        hn::Store(hn::IfThenElseZero(hn::RebindMask(di, mipmapped), hn::ConvertTo(di, level)), di, state.level + i);
+        hn::Store(hn::IfThenElseZero(mipmapped, hn::Sub(clamped, level)), d, state.blend + i);
       }
-    }
-    bool tame[QuadBatch8::kMaxReads];
-    for (int r = 0; r < batch.read_count; ++r) {
-      const Texture2D::Level& base = batch.reads[r].levels[0];
-      tame[r] = coordinates_tame(block_u, block_v, kBlockQuads * kLanes, static_cast<float>(base.width),
-                                 static_cast<float>(base.height));
     }
     for (int j = 0; j < quads; ++j, first_read = 0) {
       const int q = block + j;
       const int f0 = q * kLanes;
-      // u, v: the 4 lanes' coordinates twice (pairs), as sample_one takes them.
-      alignas(32) float u[kPairs], v[kPairs];
-      for (size_t i = 0; i < kLanes; i += hn::Lanes(d)) {
-        const auto finite_u = hn::Load(d, block_u + j * kLanes + i);
-        const auto finite_v = hn::Load(d, block_v + j * kLanes + i);
-        hn::Store(finite_u, d, u + i);
-        hn::Store(finite_u, d, u + kLanes + i);
-        hn::Store(finite_v, d, v + i);
-        hn::Store(finite_v, d, v + kLanes + i);
-      }
+      const float* quad_u = block_u + j * kLanes;  // the quad's 4 finite coordinates
+      const float* quad_v = block_v + j * kLanes;
       for (int r = first_read; r < batch.read_count; ++r) {
         const BatchRead8& read = batch.reads[r];
-        QuadSample8& job = jobs[r];
+        ReadState& state = states[r];
+        QuadSample8& job = state.job;
         if (read.mipmap_mode != MipmapMode::Nearest) {
-          const int level = level_block[r][j];
-          const float blend = blend_block[r][j];
+          const int level = state.level[j];
+          const float blend = state.blend[j];
           job.levels[0] = &read.levels[level];
           job.level_count = 1;
           job.blend = 0.0f;
@@ -241,7 +243,7 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
           }
         } else {
           // linear8_job's level selection for Nearest mipmaps.
-          float lambda = lambda_block[r][j];
+          float lambda = state.lambda[j];
           job.level_count = 1;
           job.blend = 0.0f;
           if (lambda > 0.0f) {
@@ -252,10 +254,9 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
             job.levels[0] = &read.levels[0];
           }
         }
-        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
         // The common case on its fast path: level pairs for trilinear jobs, single levels for the
         // rest, each prepared when a read's job moves to another level.
-        FastLevelPair& prepared = job.level_count == 2 ? fast_pair[r] : fast_single[r];
+        FastLevelPair& prepared = job.level_count == 2 ? state.fast_pair : state.fast_single;
         if (prepared.first != job.levels[0]) {
           const int levels_after = static_cast<int>(read.max_level) - static_cast<int>(job.levels[0] - read.levels);
           if (job.level_count == 2) {
@@ -265,15 +266,24 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
           }
         }
         if (prepared.usable) {
-          if (!sample_fast(prepared, job, tame[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
+          if (!sample_fast(prepared, job, state.tame, quad_u, quad_v, read.out, static_cast<size_t>(f0), &staging)) {
+            return finish(q * batch.read_count + r);
+          }
           continue;
         }
-        if (job.levels[0] != facts_level[r]) {
-          facts_level[r] = job.levels[0];
+        if (job.levels[0] != state.facts_level) {
+          state.facts_level = job.levels[0];
           const int level = static_cast<int>(job.levels[0] - read.levels);
-          facts[r] = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
+          state.facts = LevelFacts::of(job.levels[0], std::min(2, static_cast<int>(read.max_level) - level + 1));
         }
-        if (!sample_job(job, facts[r], u, v, out, &staging)) return finish(q * batch.read_count + r);
+        // u, v: the 4 lanes' coordinates twice (pairs), as sample_one takes them.
+        alignas(32) float u[kPairs], v[kPairs];
+        for (int pair = 0; pair < kPairs; ++pair) {
+          u[pair] = quad_u[pair % kLanes];
+          v[pair] = quad_v[pair % kLanes];
+        }
+        float* const out[4] = {read.out[0] + f0, read.out[1] + f0, read.out[2] + f0, read.out[3] + f0};
+        if (!sample_job(job, state.facts, u, v, out, &staging)) return finish(q * batch.read_count + r);
       }
       if constexpr (kAfterQuad) {  // the shader's own reads of the quad, staged in order
         const Texture2D::QuadTraceHook& hook = *batch.after_quad;
