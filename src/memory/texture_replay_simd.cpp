@@ -3,7 +3,9 @@
 // change no state, so they are counted at once; from the first lane that is not, the vector's
 // lanes are taken one by one while they hit way 0 or way 1 (a swap); the first that hits neither
 // takes the per-access path (its older ways searched and shifted on SIMD lanes) and the vectors
-// resume after it. Integer operations only: every target gives the counts of the per-access loop.
+// resume after it; its region in its slot, that access is made in place (the lane's line and set
+// are the vector's) and the lanes go on. Integer operations only: every target gives the counts
+// of the per-access loop.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "memory/texture_replay_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -185,22 +187,25 @@ HWY_INLINE bool AccessOne(const SetArray& sets, RegionTable& regions, uint64_t g
   return hit;
 }
 
-// The granules from `granules` on, while they hit one of the two most recent ways of their
-// power-of-two set; replays them and returns how many there were. Runs of most-recent-way hits
+// The granules from `granules` on, replayed in order while their regions are in their slots;
+// returns how many there were and adds their misses to `misses`. Runs of most-recent-way hits
 // change no state and are skipped a vector at a time. Streams that alternate two lines of one set
 // (a texture whose rows lie a multiple of the cache's span apart: 37 % of the universal forward
 // pass's accesses hit way 1) would otherwise leave the vector loop every few granules: a vector
 // with a lane that misses way 0 is finished here, its lanes in order, each a way-0 hit (nothing
-// changes) or a way-1 hit (the set's two lines swap), until one that hits neither. Offsets come
-// from the region table without comparing ids: a granule of a region not in its slot can never
-// hit (RegionTable), so it stops the run and AccessOne resolves it. kPlain: line_shift and
+// changes), a way-1 hit (the set's two lines swap) or, its region being the slot's, AccessOne's
+// full access with the lane's line and set (a full-screen copy's trace misses twice in every
+// 8 or 16 granules; leaving the loop for each miss cost about 30 instructions more). Offsets
+// come from the region table without comparing ids: a granule of a region not in its slot can
+// never hit (RegionTable), so it stops the run and AccessOne resolves it. kPlain: line_shift and
 // index_shift 0 (the serial texture replay), line = frame. kOlderWays: ways - 1 when known at
 // compile time, else 0.
 template <bool kPlain, size_t kOlderWays>
 class RecentHits {
  public:
-  RecentHits(const SetArray& sets, const RegionTable& regions)
-      : offsets_(regions.offsets),
+  RecentHits(const SetArray& sets, RegionTable& regions)
+      : regions_(regions),
+        offsets_(regions.offsets),
         recent_(sets.tags),
         way1_(sets.tags + sets.sets),
         older_ways_(kOlderWays != 0 ? kOlderWays : sets.ways - 1),
@@ -211,7 +216,8 @@ class RecentHits {
         index_shift_(sets.line_shift + sets.index_shift) {}
 
   // `breaks` counts the vectors that were not all most-recent-way hits.
-  HWY_INLINE size_t Leading(const uint64_t* granules, size_t count, size_t& breaks) const {
+  HWY_INLINE size_t Leading(const uint64_t* granules, size_t count, size_t& breaks,
+                            uint64_t& misses) const {
     const size_t lanes = hn::Lanes(d_);
     size_t i = 0;
     // Two vectors per branch: runs of most-recent-way hits average about 20 granules.
@@ -226,14 +232,15 @@ class RecentHits {
       }
       if (hn::AllTrue(d_, first)) {  // the first vector changed nothing: the second's test holds
         ++breaks;
-        const size_t replayed = TopTwo(second, second_line, second_index);
+        const size_t replayed =
+            TopTwo(granules + i + lanes, second, second_line, second_index, misses);
         i += lanes + replayed;
         if (replayed < lanes) return i;
         continue;
       }
       // The second vector is tested again against the state the first leaves.
       ++breaks;
-      const size_t replayed = TopTwo(first, line, index);
+      const size_t replayed = TopTwo(granules + i, first, line, index, misses);
       i += replayed;
       if (replayed < lanes) return i;
     }
@@ -242,13 +249,15 @@ class RecentHits {
       const auto hit = Hit(granules + i, line, index);
       if (hn::AllTrue(d_, hit)) continue;
       ++breaks;
-      const size_t replayed = TopTwo(hit, line, index);
+      const size_t replayed = TopTwo(granules + i, hit, line, index, misses);
       if (replayed < lanes) return i + replayed;
     }
     for (; i < count; ++i) {
       const uint64_t slot = (granules[i] >> kRegionShift) & (RegionTable::kSlots - 1);
       const uint64_t frame = granules[i] + offsets_[slot];
-      if (!StepTopTwo(frame >> line_shift_, (frame >> index_shift_) & last_set_)) return i;
+      if (!Step(granules[i], frame >> line_shift_, (frame >> index_shift_) & last_set_, misses)) {
+        return i;
+      }
     }
     return count;
   }
@@ -270,11 +279,12 @@ class RecentHits {
     return hn::Eq(hn::GatherIndex(d_, recent_, hn::BitCast(di_, index)), line);
   }
 
-  // Replays the lanes of a vector in order from its first lane that missed way 0 (`recent`: the
-  // lanes that hit way 0 of the state before the vector, not all of them; the lanes before that
-  // one changed nothing) while they hit way 0 or way 1 of their sets as they stand; returns how
-  // many lanes were replayed.
-  HWY_INLINE size_t TopTwo(hn::Mask<D> recent, hn::Vec<D> line, hn::Vec<D> index) const {
+  // Replays the lanes of a vector (`granules`) in order from its first lane that missed way 0
+  // (`recent`: the lanes that hit way 0 of the state before the vector, not all of them; the
+  // lanes before that one changed nothing) while Step takes them; returns how many lanes were
+  // replayed.
+  HWY_INLINE size_t TopTwo(const uint64_t* granules, hn::Mask<D> recent, hn::Vec<D> line,
+                           hn::Vec<D> index, uint64_t& misses) const {
     const size_t lanes = hn::Lanes(d_);
     size_t j = hn::FindKnownFirstTrue(d_, hn::Not(recent));
     if (older_ways_ == 0) return j;
@@ -283,9 +293,32 @@ class RecentHits {
     hn::Store(line, d_, lane_line);
     hn::Store(index, d_, lane_set);
     for (; j < lanes; ++j) {
-      if (!StepTopTwo(lane_line[j], lane_set[j])) return j;
+      if (!Step(granules[j], lane_line[j], lane_set[j], misses)) return j;
     }
     return lanes;
+  }
+
+  // The access of `granule` (`line` in set `set`, by its slot's offset) when the set's two most
+  // recent ways hold it (a way-1 hit swaps the two) or its region is its slot's (then the full
+  // access, as AccessOne makes it, a miss counted against the region): true. False, nothing
+  // changed, for a region not in its slot (whose lines are never cached, RegionTable) or a miss
+  // of a one-way cache.
+  HWY_INLINE bool Step(uint64_t granule, uint64_t line, uint64_t set, uint64_t& misses) const {
+    if (StepTopTwo(line, set)) return true;
+    const uint64_t id = granule >> kRegionShift;
+    const size_t slot = id & (RegionTable::kSlots - 1);
+    if (older_ways_ == 0 || regions_.ids[slot] != id) return false;
+    uint64_t* const recent = recent_ + set;
+    uint64_t* const row = way1_ + set * older_ways_;  // SetArray::older_of
+    bool hit;
+    if constexpr (kOlderWays == 15) {
+      hit = AccessAllWays(recent, row, line);
+    } else {
+      hit = AccessPastTopTwo<kOlderWays>(recent, row, older_ways_, line);
+    }
+    regions_.misses[slot] += hit ? 0 : 1;
+    misses += hit ? 0 : 1;
+    return true;
   }
 
   // The access of `line` in set `set` if the set's two most recent ways hold it (then true: a
@@ -303,6 +336,7 @@ class RecentHits {
 
   D d_;
   hn::RebindToSigned<D> di_;
+  RegionTable& regions_;
   const uint64_t* offsets_;
   uint64_t* recent_;
   uint64_t* way1_;
@@ -365,9 +399,10 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
       i = end;
     } else {
       while (true) {
-        i += recent_hits.Leading(granules + i, end - i, breaks);
+        i += recent_hits.Leading(granules + i, end - i, breaks, misses);
         if (i == end) break;
-        // Leading stopped at a granule that missed its set's two most recent ways.
+        // Leading stopped at a granule whose region is not in its slot (or, in a one-way
+        // cache, that missed).
         misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
         ++i;
         ++breaks;

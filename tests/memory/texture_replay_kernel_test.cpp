@@ -266,5 +266,47 @@ TEST(TextureReplayKernel, LongCallsSwitchingLoopsReplayAsThePlainLruOnEveryTarge
   }
 }
 
+// Full-screen copy traces (each quad row's two new lines A B, then A B repeated: 2 misses in
+// every 8 or 16 granules, inside the vectors, which the kernel replays in place), with now and
+// then a granule of a region sharing the table slot (a miss and a region to resolve in one
+// vector) or a line of a row before (a deeper hit). On every SIMD target the machine runs.
+TEST(TextureReplayKernel, CopyTracesMissingInsideVectorsReplayAsThePlainLruOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  const Shape shapes[] = {{256, 16, 0, 0}, {64, 16, 0, 0}, {64, 16, 2, 0}, {128, 16, 0, 1},
+                          {64, 4, 0, 0},   {48, 16, 0, 0}, {32, 1, 0, 0}};
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (const Shape& shape : shapes) {
+      std::mt19937_64 rng(11);
+      const uint64_t granules_per_line = uint64_t{1} << shape.line_shift;
+      std::vector<uint64_t> stream;
+      const auto push = [&](uint64_t g) {
+        if (stream.empty() || stream.back() != g) stream.push_back(g);
+      };
+      const uint64_t row_lines = 241 + shape.sets / 2;  // the next row: another set
+      for (uint64_t row = 0; row < 300; ++row) {
+        const uint64_t repeats = row % 2 == 0 ? 4 : 8;
+        for (uint64_t column = 0; column < 6; ++column) {
+          const uint64_t a = 2 * row * row_lines + column, b = a + row_lines;
+          for (uint64_t k = 0; k < repeats; ++k) {
+            push(granule(shape, 1, a, k % granules_per_line));
+            push(granule(shape, 1, b, k % granules_per_line));
+            if (rng() % 29 == 0) push(granule(shape, 1 + 64 * (1 + rng() % 2), rng() % 64, 0));
+            if (rng() % 31 == 0 && row > 0) push(granule(shape, 1, a - 2 * row_lines, 0));
+          }
+        }
+      }
+      std::vector<std::vector<uint64_t>> calls;
+      for (size_t at = 0; at < stream.size();) {
+        const size_t length = std::min<size_t>(stream.size() - at, 300 + rng() % 2000);
+        calls.emplace_back(stream.begin() + static_cast<std::ptrdiff_t>(at),
+                           stream.begin() + static_cast<std::ptrdiff_t>(at + length));
+        at += length;
+      }
+      expect_replays_as_plain_lru(shape, calls, name_of(shape) + ", copy trace, target " + target);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ontile
