@@ -224,7 +224,7 @@ class QuadBatcher {
   alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
   // Interpolation inputs of queued quad q (add()): offset of its top-left pixel in its cell and
   // the cell's plane origins. shade_invocation packs the shaded quads' entries to the front for
-  // interpolate_whole_quads (pixel centres), or reads them per fragment (sample shading).
+  // interpolate_quad_runs (pixel centres), or reads them per fragment (sample shading).
   alignas(64) int32_t origin_ox_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) int32_t origin_oy_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) float origin_l1_[kBatchQuads + kQuadOriginsPadding] = {};
