@@ -8,8 +8,10 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 
 #include "raster/cell_raster.h"
+#include "raster/interpolation_runs.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace ontile {
@@ -161,6 +163,75 @@ void InterpolateWholeQuadsKernel(const InterpolationInput& in, const QuadOrigins
   }
 }
 
+// PlaneTerms of one run.
+template <class D>
+PlaneTerms<D> run_terms(D d, const InterpolationRun& run) {
+  InterpolationInput in{};
+  in.l1_dx = run.l1_dx;
+  in.l1_dy = run.l1_dy;
+  in.l2_dx = run.l2_dx;
+  in.l2_dy = run.l2_dy;
+  in.z_dx = run.z_dx;
+  in.z_dy = run.z_dy;
+  for (int v = 0; v < 3; ++v) in.inv_w[v] = run.inv_w[v];
+  return PlaneTerms<D>(d, in);
+}
+
+// Each run as InterpolateWholeQuadsKernel would do it, without a call, a chunk loop and a
+// 4-lane tail per run: a run's vectors start at its first quad and its last vector may run on
+// into the next run's quads (which that run then overwrites), so only the batch's end takes
+// 4-lane vectors. Lanes get the same operations whatever vector they are in.
+void InterpolateQuadRunsKernel(const InterpolationRun* runs, int run_count, const QuadOrigins& quads,
+                               int quad_count, int varying_count, uint32_t varyings_read,
+                               float* depth_out, float* varyings_out, int stride) {
+  const hn::ScalableTag<float> d;
+  const hn::CappedTag<float, 4> d4;  // one quad
+  static_assert(HWY_MAX_BYTES / sizeof(float) <= 16, "kQuadOfLane covers 16 lanes");
+  const size_t n = hn::Lanes(d);
+  const size_t total = static_cast<size_t>(quad_count) * kFragmentsPerQuad;
+  // Local copies: the stores below may not alias them.
+  const QuadOrigins origins = quads;
+  // A run's weights from its first fragment on, with room for a last vector's overrun.
+  alignas(64) float w1[kMaxRunFragments + 16], w2[kMaxRunFragments + 16];
+  for (int r = 0; r < run_count; ++r) {
+    const InterpolationRun& run = runs[r];
+    const size_t first = static_cast<size_t>(run.first_quad) * kFragmentsPerQuad;
+    const size_t end = r + 1 < run_count ? static_cast<size_t>(runs[r + 1].first_quad) * kFragmentsPerQuad : total;
+    const QuadOrigins at{origins.ox + run.first_quad, origins.oy + run.first_quad,
+                         origins.l1 + run.first_quad, origins.l2 + run.first_quad,
+                         origins.z + run.first_quad};
+    // Whole vectors while they stay inside the batch, then quads.
+    const size_t whole_end = std::min(end, total >= n ? total - n + 1 : 0);
+    size_t i = 0;
+    {
+      const PlaneTerms<hn::ScalableTag<float>> p = run_terms(d, run);
+      for (; first + i < whole_end; i += n) whole_quad_vector(d, p, at, i, depth_out + first, w1, w2);
+    }
+    const size_t vector_end = i;
+    if (first + i < end) {
+      const PlaneTerms<hn::CappedTag<float, 4>> p4 = run_terms(d4, run);
+      for (; first + i < end; i += hn::Lanes(d4)) whole_quad_vector(d4, p4, at, i, depth_out + first, w1, w2);
+    }
+    const size_t run_end = i;
+    // The varyings the functor reads, by their bits; the vertex pointers as locals (the stores
+    // below are floats, so the run's pointers would be reloaded per varying).
+    uint32_t read = varying_count >= 32 ? varyings_read : varyings_read & ((1u << varying_count) - 1u);
+    const float* const vertex0 = run.vertex_varyings[0];
+    const float* const vertex1 = run.vertex_varyings[1];
+    const float* const vertex2 = run.vertex_varyings[2];
+    for (; read; read &= read - 1) {
+      const int k = std::countr_zero(read);
+      const float v0 = vertex0[k];
+      const float d1 = vertex1[k] - v0;
+      const float d2 = vertex2[k] - v0;
+      float* out = varyings_out + static_cast<size_t>(k) * stride + first;
+      size_t j = 0;
+      for (; j < vector_end; j += n) varyings_vector(d, v0, d1, d2, w1, w2, j, out);
+      for (; j < run_end; j += hn::Lanes(d4)) varyings_vector(d4, v0, d1, d2, w1, w2, j, out);
+    }
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ontile
 HWY_AFTER_NAMESPACE();
@@ -170,6 +241,15 @@ namespace ontile {
 
 HWY_EXPORT(InterpolateKernel);
 HWY_EXPORT(InterpolateWholeQuadsKernel);
+HWY_EXPORT(InterpolateQuadRunsKernel);
+
+void interpolate_quad_runs(const InterpolationRun* runs, int run_count, const QuadOrigins& quads,
+                           int quad_count, int varying_count, uint32_t varyings_read,
+                           float* depth_out, float* varyings_out, int varyings_stride) {
+  HWY_DYNAMIC_DISPATCH(InterpolateQuadRunsKernel)(runs, run_count, quads, quad_count, varying_count,
+                                                  varyings_read, depth_out, varyings_out,
+                                                  varyings_stride);
+}
 
 void interpolate_fragments(const InterpolationInput& in, int count, float* depth_out,
                            float* varyings_out, int varyings_stride) {

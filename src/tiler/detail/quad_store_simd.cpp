@@ -8,6 +8,7 @@
 
 #include "tiler/detail/quad_store_simd.h"
 
+#include <bit>
 #include <cstring>
 
 #include "raster/pixel_format.h"
@@ -243,14 +244,27 @@ void store_quad_rows_codes(const uint32_t* codes, const int32_t* first, const in
   HWY_DYNAMIC_DISPATCH(StoreQuadRowsCodesKernel)(codes, first, quads, top, segments, row_pixels, plane);
 }
 
+// A quad row (two adjacent pixels) as one 64-bit word, lane x in the low half (little-endian
+// x86): the written lanes blended in, the others stored back as they were, so a quad costs the
+// same whatever its lanes (full and partial quads come in about equal numbers, unpredictably).
 void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,
                       const uint8_t* lanes, int quad_count, int row_pixels, uint32_t* plane) {
+  static_assert(std::endian::native == std::endian::little, "pixel x of a pair is its low half");
+  static constexpr uint64_t kPairMask[4] = {0, 0xFFFFFFFFull, 0xFFFFFFFF00000000ull, ~uint64_t{0}};
   for (int q = 0; q < quad_count; ++q) {
-    uint32_t* top = plane + pixel[q];
-    const uint32_t* src = codes + first_fragment[q];
-    for (int lane = 0; lane < 4; ++lane) {
-      if ((lanes[q] >> lane) & 1u) top[(lane >> 1) * static_cast<size_t>(row_pixels) + (lane & 1)] = src[lane];
-    }
+    uint32_t* const top = plane + pixel[q];
+    uint32_t* const bottom = top + row_pixels;
+    const uint32_t* const src = codes + first_fragment[q];
+    const uint64_t top_mask = kPairMask[lanes[q] & 3u], bottom_mask = kPairMask[(lanes[q] >> 2) & 3u];
+    uint64_t new_top, new_bottom, old_top, old_bottom;
+    std::memcpy(&new_top, src, sizeof(uint64_t));
+    std::memcpy(&new_bottom, src + 2, sizeof(uint64_t));
+    std::memcpy(&old_top, top, sizeof(uint64_t));
+    std::memcpy(&old_bottom, bottom, sizeof(uint64_t));
+    old_top = (old_top & ~top_mask) | (new_top & top_mask);
+    old_bottom = (old_bottom & ~bottom_mask) | (new_bottom & bottom_mask);
+    std::memcpy(top, &old_top, sizeof(uint64_t));
+    std::memcpy(bottom, &old_bottom, sizeof(uint64_t));
   }
 }
 

@@ -35,6 +35,8 @@ void store_full_quad_codes(const uint32_t* codes, const int32_t* first_fragment,
 // by side from plane pixel top[s] on, fragments 4 first[s] on in order.
 void store_quad_rows_codes(const uint32_t* codes, const int32_t* first, const int32_t* quads,
                            const uint32_t* top, int segments, int row_pixels, uint32_t* plane);
+// store_full_quad_codes of the lanes set in lanes[i] only (the others keep their codes); the
+// quads in order, so a later quad's pixels overwrite an earlier one's.
 void store_quad_codes(const uint32_t* codes, const int32_t* first_fragment, const uint32_t* pixel,
                       const uint8_t* lanes, int quad_count, int row_pixels, uint32_t* plane);
 // load_full_quads of a code plane, decoded as decode_pixel does (sRGB or UNORM colour, UNORM

@@ -93,87 +93,68 @@ void QuadBatcher::write_back(int q, const BatchTriangle& triangle) {
 // write_back for the common case, the batch at once: one sample per pixel, outputs already
 // quantised per batch. Depth was written by early Z, or (late Z: functors that may discard, such
 // as deferred lighting) is written here for the samples that passed the depth test and were not
-// discarded, with write_back's rejection count. Quads whose four lanes all pass are copied to
-// tile memory on SIMD lanes; the others lane by lane. Quads of one triangle never share a pixel,
-// so within a triangle the order of writes does not matter; a later triangle's quads may
-// overwrite an earlier one's, so full quads are stored before the next triangle's.
+// discarded, with write_back's rejection count. The quads with written lanes are listed in queue
+// order (a later triangle's quads may overwrite an earlier one's pixels) and each output is then
+// stored in one call, every quad with its lane mask (no split into whole and partial quads: a
+// coin toss per quad, and one call per triangle, were most of this function's cost).
 void QuadBatcher::write_back_single_sample() {
   const TriangleContext& ctx = *ctx_;
   const std::vector<int>& outputs = ctx.subpass.color_outputs;
   const BatchOutput& out = *outputs_[0];
   const bool late_z = ctx.late_z;
   const bool late_depth_write = late_z && ctx.depth_write;
-  // A triangle's quads, written when the triangle ends (a later triangle of the batch may
-  // cover the same pixels): whole quads, and quads with some lanes written.
-  int full_quads = 0, partial_quads = 0;
-  int32_t partial_first_fragment[kBatchQuads];
-  uint32_t partial_pixel[kBatchQuads];
-  uint8_t partial_lanes[kBatchQuads];
-  const auto store_triangle = [&] {
-    for (size_t k = 0; k < outputs.size(); ++k) {
-      if (memory_->holds_codes(outputs[k])) {
-        uint32_t* const codes = memory_->code_plane(outputs[k]);
-        if (full_quads) store_full_quad_codes(codes_[0][k], full_first_fragment_, full_pixel_, full_quads, memory_->width(), codes);
-        if (partial_quads) {
-          store_quad_codes(codes_[0][k], partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), codes);
-        }
-        continue;
-      }
-      const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
-                                        out.color[k][3]};
-      glm::vec4* const plane = memory_->color_plane(outputs[k]);
-      if (full_quads) store_full_quads(channels, full_first_fragment_, full_pixel_, full_quads, memory_->width(), plane);
-      if (partial_quads) {
-        store_quads(channels, partial_first_fragment, partial_pixel, partial_lanes, partial_quads, memory_->width(), plane);
-      }
-    }
-    full_quads = partial_quads = 0;
-  };
   // Locals, not members: the stores below are ints too, so members would be reloaded per quad.
-  const int triangles = triangle_count_;
+  const int queued = queued_;
   const bool write_color = ctx.write_color;
   const int x0 = ctx.rect.x0, y0 = ctx.rect.y0;
   const size_t width = static_cast<size_t>(memory_->width());
   const size_t samples = static_cast<size_t>(memory_->samples());
   float* const depth_plane = memory_->depth_plane();
+  int32_t first_fragment[kBatchQuads];
+  uint32_t pixel_of[kBatchQuads];
+  uint8_t lanes_written[kBatchQuads];
+  int listed = 0;
   uint64_t rejected = 0, written = 0;
-  for (int t = 0; t < triangles; ++t) {
-    const int q_end = end_of(t);
-    for (int q = triangles_[t].first_quad; q < q_end; ++q) {
-      const uint8_t lanes = lanes_of(quad_passing_[q]);
-      if (late_z) rejected += static_cast<uint64_t>(lane_count(lanes_of(quad_coverage_[q]) & ~lanes));
-      written += static_cast<uint64_t>(lane_count(lanes));
-      if (!lanes) continue;
-      const int qx = quad_qx_[q], qy = quad_qy_[q];
-      // TileMemory::index(qx - x0, qy - y0, 0).
-      const size_t pixel = (static_cast<size_t>(qy - y0) * width + static_cast<size_t>(qx - x0)) * samples;
-      if (late_depth_write) {
-        // The cell's depth at each passing lane, as rasterize_cells computed it.
-        // (Cells are aligned to multiples of kCellSizePx: the quad's offset in its cell.)
-        const float* z = cell_depth_ + static_cast<size_t>(quad_cell_[q]) * kMaxSamples * kCellPixels +
-                         (qy & (kCellSizePx - 1)) * kCellSizePx + (qx & (kCellSizePx - 1));
-        float* depth = depth_plane + pixel;
-        for (int lane = 0; lane < kQuadLanes; ++lane) {
-          if (!((lanes >> lane) & 1u)) continue;
-          depth[static_cast<size_t>(lane >> 1) * width + (lane & 1)] = z[(lane >> 1) * kCellSizePx + (lane & 1)];
-        }
+  const bool lanes_known = passing_lanes_shaded_;
+  // The batch's quads are its triangles' in order: [0, queued).
+  for (int q = 0; q < queued; ++q) {
+    const uint8_t lanes = lanes_known ? shaded_lanes_[q] : lanes_of_sample0(quad_passing_[q]);
+    if (late_z) rejected += static_cast<uint64_t>(lane_count(lanes_of_sample0(quad_coverage_[q]) & ~lanes));
+    written += static_cast<uint64_t>(lane_count(lanes));
+    if (!lanes) continue;
+    const int qx = quad_qx_[q], qy = quad_qy_[q];
+    // TileMemory::index(qx - x0, qy - y0, 0).
+    const size_t pixel = (static_cast<size_t>(qy - y0) * width + static_cast<size_t>(qx - x0)) * samples;
+    if (late_depth_write) {
+      // The cell's depth at each passing lane, as rasterize_cells computed it.
+      // (Cells are aligned to multiples of kCellSizePx: the quad's offset in its cell.)
+      const float* z = cell_depth_ + static_cast<size_t>(quad_cell_[q]) * kMaxSamples * kCellPixels +
+                       (qy & (kCellSizePx - 1)) * kCellSizePx + (qx & (kCellSizePx - 1));
+      float* depth = depth_plane + pixel;
+      for (int lane = 0; lane < kQuadLanes; ++lane) {
+        if (!((lanes >> lane) & 1u)) continue;
+        depth[static_cast<size_t>(lane >> 1) * width + (lane & 1)] = z[(lane >> 1) * kCellSizePx + (lane & 1)];
       }
-      if (!write_color) continue;
-      const int first = slot_[0][q] * kQuadLanes;
-      if (lanes == 0xF) {
-        full_first_fragment_[full_quads] = first;
-        full_pixel_[full_quads] = static_cast<uint32_t>(pixel);
-        ++full_quads;
-        continue;
-      }
-      partial_first_fragment[partial_quads] = first;
-      partial_pixel[partial_quads] = static_cast<uint32_t>(pixel);
-      partial_lanes[partial_quads++] = lanes;
     }
-    if (full_quads || partial_quads) store_triangle();
+    first_fragment[listed] = slot_[0][q] * kQuadLanes;
+    pixel_of[listed] = static_cast<uint32_t>(pixel);
+    lanes_written[listed++] = lanes;
   }
   counters_->fragments_depth_rejected += rejected;
   counters_->samples_written += written;
+  if (!write_color || listed == 0) return;
+  const int row_pixels = memory_->width();
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    if (memory_->holds_codes(outputs[k])) {
+      store_quad_codes(codes_[0][k], first_fragment, pixel_of, lanes_written, listed, row_pixels,
+                       memory_->code_plane(outputs[k]));
+      continue;
+    }
+    const float* const channels[4] = {out.color[k][0], out.color[k][1], out.color[k][2],
+                                      out.color[k][3]};
+    store_quads(channels, first_fragment, pixel_of, lanes_written, listed, row_pixels,
+                memory_->color_plane(outputs[k]));
+  }
 }
 
 }  // namespace ontile
