@@ -136,6 +136,17 @@ CellMask DepthTestKernel(CompareOp op, bool test, bool write, const float* z, fl
   return depth_test_rows<CompareOp::Always>(write, z, stored, stride, rows, candidates, range_lo, range_hi);
 }
 
+// CellDepthKernel then DepthTestKernel of a whole-width cell in one dispatched call (the
+// single-sample early-Z path runs both for every covered cell).
+CellMask CellDepthTestKernel(const CellPlane& depth, float off_x, float off_y, int first_row,
+                             int end_row, float* z, CompareOp op, bool test, bool write,
+                             float* stored, int stride, int rows, CellMask candidates,
+                             float* range_lo, float* range_hi) {
+  CellDepthKernel(depth.origin, depth.dx, depth.dy, off_x, off_y, first_row, end_row, z);
+  return DepthTestKernel(op, test, write, z, stored, stride, kCellSizePx, rows, candidates,
+                         range_lo, range_hi);
+}
+
 // Minimum and maximum of `rows` rows of `count` floats, `stride` apart, with the scalar
 // semantics lo = x < lo ? x : lo (starting from first[0]), lane by lane: the same value whatever
 // the order (up to the sign of a zero, which no depth compare can see).
@@ -200,13 +211,29 @@ namespace ontile {
 HWY_EXPORT(CellDepthKernel);
 HWY_EXPORT(DepthTestKernel);
 HWY_EXPORT(DepthRangeKernel);
+HWY_EXPORT(CellDepthTestKernel);
+
+namespace {
+// A sample offset in 1/256 px from the pixel's top-left corner, from the pixel centre in px.
+float centre_offset(int32_t s) {
+  return static_cast<float>(s - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
+}
+}  // namespace
 
 void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels],
                             int first_row, int end_row) {
-  const float off_x = static_cast<float>(sx - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
-  const float off_y = static_cast<float>(sy - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
-  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, off_x, off_y, first_row,
-                                        end_row, out);
+  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, centre_offset(sx),
+                                        centre_offset(sy), first_row, end_row, out);
+}
+
+CellMask interpolate_and_test_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy,
+                                         int first_row, int end_row, float z[kCellPixels],
+                                         CompareOp op, bool test, bool write, float* stored,
+                                         int stride, int rows, CellMask candidates,
+                                         float* range_lo, float* range_hi) {
+  return HWY_DYNAMIC_DISPATCH(CellDepthTestKernel)(depth, centre_offset(sx), centre_offset(sy),
+                                                   first_row, end_row, z, op, test, write, stored,
+                                                   stride, rows, candidates, range_lo, range_hi);
 }
 
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],

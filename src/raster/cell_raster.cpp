@@ -118,9 +118,30 @@ CellMask coverage_int64(const EdgeFunction* const* edges, int count, int64_t px0
 }  // namespace
 
 CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
+  // The cells holding the vertices' bounding box, in subpixels: a covered sample lies in the
+  // triangle, inside that box. Every sample there is within (span_x - 1, span_y - 1) of each
+  // vertex along each axis, and an edge's |a| <= span_y - 1, |b| <= span_x - 1 (differences of
+  // vertices), so |E| <= 2 (span_x - 1) (span_y - 1) there, the bias adding at most 1 more.
+  constexpr int kCellShift = kSubpixelBits + 3;
+  static_assert(kCellSizePx == 1 << 3);
+  const int32_t x0 = std::min({t.x_fp[0], t.x_fp[1], t.x_fp[2]}) >> kCellShift;
+  const int32_t x1 = (std::max({t.x_fp[0], t.x_fp[1], t.x_fp[2]}) >> kCellShift) + 1;
+  const int32_t y0 = std::min({t.y_fp[0], t.y_fp[1], t.y_fp[2]}) >> kCellShift;
+  const int32_t y1 = (std::max({t.y_fp[0], t.y_fp[1], t.y_fp[2]}) >> kCellShift) + 1;
+  const int64_t span_x = int64_t{x1 - x0} << kCellShift, span_y = int64_t{y1 - y0} << kCellShift;
+  small = 2 * span_x * span_y < int64_t{1} << 31;
+  small_x0 = x0 * kCellSizePx;
+  small_y0 = y0 * kCellSizePx;
+  small_x1 = x1 * kCellSizePx;
+  small_y1 = y1 * kCellSizePx;
   for (int k = 0; k < 3; ++k) {
     const EdgeFunction& e = t.edge[k];
     c_biased[k] = e.c + e.bias;
+    if (small) {
+      a_step[k] = static_cast<int32_t>(e.a * kSubpixelScale);
+      b_step[k] = static_cast<int32_t>(e.b * kSubpixelScale);
+      continue;
+    }
     // One multiply each: (min(a, 0) + min(b, 0)) * span is the same integer (no overflow).
     lowest[k] = (std::min<int64_t>(e.a, 0) + std::min<int64_t>(e.b, 0)) * kCellSpanSubpx;
     highest[k] = (std::max<int64_t>(e.a, 0) + std::max<int64_t>(e.b, 0)) * kCellSpanSubpx;
@@ -153,6 +174,26 @@ CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int
   const TriangleSetup& t = *edges.setup;
   const int64_t px0 = int64_t{cell_x0} * kSubpixelScale;
   const int64_t py0 = int64_t{cell_y0} * kSubpixelScale;
+  const int first_bit = std::countr_zero(valid) / kCellSizePx * kCellSizePx;
+  const int end_bit = (kCellPixels - 1 - std::countl_zero(valid)) / kCellSizePx * kCellSizePx + kCellSizePx;
+  if (edges.small) {
+    if (cell_x0 < edges.small_x0 || cell_x0 >= edges.small_x1 || cell_y0 < edges.small_y0 ||
+        cell_y0 >= edges.small_y1) {
+      return nothing();
+    }
+    int64_t corner[3];
+    for (int k = 0; k < 3; ++k) corner[k] = t.edge[k].a * px0 + t.edge[k].b * py0 + edges.c_biased[k];
+    CellMask any = 0;
+    for (int s = 0; s < pattern.count; ++s) {
+      int32_t e0[3];
+      for (int k = 0; k < 3; ++k) {
+        e0[k] = static_cast<int32_t>(corner[k] + t.edge[k].a * pattern.x[s] + t.edge[k].b * pattern.y[s]);
+      }
+      out[s] = HWY_DYNAMIC_DISPATCH(CoverageKernel)(e0, edges.a_step, edges.b_step, 3, first_bit, end_bit) & valid;
+      any |= out[s];
+    }
+    return any;
+  }
   // Trivial reject / accept from each edge's extreme values over the cell.
   const EdgeFunction* partial[3];
   int32_t a[3], b[3];
@@ -169,8 +210,6 @@ CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int
     partial[partial_count++] = &t.edge[k];
     int32_ok = int32_ok && edges.int32_ok[k];
   }
-  const int first_bit = std::countr_zero(valid) / kCellSizePx * kCellSizePx;
-  const int end_bit = (kCellPixels - 1 - std::countl_zero(valid)) / kCellSizePx * kCellSizePx + kCellSizePx;
   CellMask any = 0;
   for (int s = 0; s < pattern.count; ++s) {
     CellMask bits = ~CellMask{0};
@@ -191,44 +230,16 @@ CellMask cell_coverage(const CellEdges& edges, const SamplePattern& pattern, int
 
 TrianglePlanes::TrianglePlanes(const TriangleSetup& t) : t_(t) {
   const double per_px = static_cast<double>(kSubpixelScale) * t.inv_area2;
-  l1_dx_ = static_cast<double>(t.edge[1].a) * per_px;
-  l1_dy_ = static_cast<double>(t.edge[1].b) * per_px;
-  l2_dx_ = static_cast<double>(t.edge[2].a) * per_px;
-  l2_dy_ = static_cast<double>(t.edge[2].b) * per_px;
-  const double dz1 = static_cast<double>(t.depth[1]) - t.depth[0];
-  const double dz2 = static_cast<double>(t.depth[2]) - t.depth[0];
-  z_dx_ = l1_dx_ * dz1 + l2_dx_ * dz2;
-  z_dy_ = l1_dy_ * dz1 + l2_dy_ * dz2;
-}
-
-void TrianglePlanes::at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const {
-  const int64_t px = int64_t{cell_x0} * kSubpixelScale + kSubpixelScale / 2;
-  const int64_t py = int64_t{cell_y0} * kSubpixelScale + kSubpixelScale / 2;
-  const double l1 = static_cast<double>(t_.edge[1].at(px, py)) * t_.inv_area2;
-  const double l2 = static_cast<double>(t_.edge[2].at(px, py)) * t_.inv_area2;
-  const double z = t_.depth[0] + l1 * (static_cast<double>(t_.depth[1]) - t_.depth[0]) +
-                   l2 * (static_cast<double>(t_.depth[2]) - t_.depth[0]);
-  out[0] = {static_cast<float>(l1), static_cast<float>(l1_dx_), static_cast<float>(l1_dy_)};
-  out[1] = {static_cast<float>(l2), static_cast<float>(l2_dx_), static_cast<float>(l2_dy_)};
-  out[2] = {static_cast<float>(z), static_cast<float>(z_dx_), static_cast<float>(z_dy_)};
-}
-
-void cell_depth_bounds(const CellPlane& z, int cell_x0, int cell_y0, int x0, int y0, int x1,
-                       int y1, double& min_out, double& max_out) {
-  // Sample offsets from the top-left pixel centre span [x0 - cell_x0 - 0.5, x1 - cell_x0 - 0.5].
-  const double fx_lo = x0 - cell_x0 - 0.5, fx_hi = x1 - cell_x0 - 0.5;
-  const double fy_lo = y0 - cell_y0 - 0.5, fy_hi = y1 - cell_y0 - 0.5;
-  const double zx_lo = std::min(z.dx * fx_lo, z.dx * fx_hi), zx_hi = std::max(z.dx * fx_lo, z.dx * fx_hi);
-  const double zy_lo = std::min(z.dy * fy_lo, z.dy * fy_hi), zy_hi = std::max(z.dy * fy_lo, z.dy * fy_hi);
-  // The float evaluation fl(fl(o + fl(dx fx)) + fl(dy fy)) of the float-rounded plane differs
-  // from this (exactly evaluated) float plane by at most 3 roundings of the largest partial
-  // magnitude; 8 units of 2^-24 is a safe margin (docs/rasterization.md).
-  const double magnitude = std::abs(static_cast<double>(z.origin)) +
-                           std::abs(static_cast<double>(z.dx)) * kCellSizePx +
-                           std::abs(static_cast<double>(z.dy)) * kCellSizePx;
-  const double margin = magnitude * 8.0 * 0x1p-24 + 0x1p-126;
-  min_out = z.origin + zx_lo + zy_lo - margin;
-  max_out = z.origin + zx_hi + zy_hi + margin;
+  const double l1_dx = static_cast<double>(t.edge[1].a) * per_px;
+  const double l1_dy = static_cast<double>(t.edge[1].b) * per_px;
+  const double l2_dx = static_cast<double>(t.edge[2].a) * per_px;
+  const double l2_dy = static_cast<double>(t.edge[2].b) * per_px;
+  dz1_ = static_cast<double>(t.depth[1]) - t.depth[0];
+  dz2_ = static_cast<double>(t.depth[2]) - t.depth[0];
+  const double z_dx = l1_dx * dz1_ + l2_dx * dz2_;
+  const double z_dy = l1_dy * dz1_ + l2_dy * dz2_;
+  const double per_pixel[6] = {l1_dx, l1_dy, l2_dx, l2_dy, z_dx, z_dy};
+  for (int i = 0; i < 6; ++i) gradients_[i] = static_cast<float>(per_pixel[i]);
 }
 
 const char* active_simd_target() { return HWY_DYNAMIC_DISPATCH(TargetNameKernel)(); }

@@ -4,6 +4,8 @@
 // 32-bit fixed point when the edge's slope allows it, 64-bit otherwise. Also the float plane
 // equations (barycentrics, depth) the interpolation evaluates, anchored at each cell's origin.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,14 +38,23 @@ inline CellMask cell_rect_mask(int cell_x0, int cell_y0, int x0, int y0, int x1,
 }
 
 // A triangle's edges prepared once for cell_coverage of many cells: each edge's constant with
-// the fill-rule bias folded in, its extreme offsets over a cell's sample span (for trivial
-// reject / accept) and whether its steps fit the int32 lanes.
+// the fill-rule bias folded in and its steps for the int32 lanes. A small triangle (most of a
+// detailed scene's) has every edge value at every sample of the cells around its vertices in
+// int32 range: those cells evaluate all three edges on int32 lanes with no per-edge trivial
+// tests (an edge a test would accept is >= 0 at every sample and changes no bit), and no other
+// cell holds a covered sample. Otherwise each edge's extreme offsets over a cell's sample span
+// (trivial reject / accept) and whether its steps fit the int32 lanes.
 struct CellEdges {
   explicit CellEdges(const TriangleSetup& t);
   const TriangleSetup* setup;
   int64_t c_biased[3];
-  int64_t lowest[3], highest[3];  // min / max of a * dx + b * dy over dx, dy in [0, span]
   int32_t a_step[3], b_step[3];   // a and b per pixel (x 256), valid where int32_ok
+  bool small;
+  // Small triangles: pixel bounds [x0, x1) x [y0, y1) of the cells holding the vertices'
+  // bounding box (multiples of 8).
+  int32_t small_x0, small_y0, small_x1, small_y1;
+  // Set only when !small.
+  int64_t lowest[3], highest[3];  // min / max of a * dx + b * dy over dx, dy in [0, span]
   bool int32_ok[3];
 };
 
@@ -76,20 +87,45 @@ class TrianglePlanes {
  public:
   explicit TrianglePlanes(const TriangleSetup& t);
   // Planes anchored at the centre of the cell's top-left pixel: [0] lambda1, [1] lambda2,
-  // [2] depth.
-  void at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const;
+  // [2] depth. Inline: the tile loop asks once per covered cell.
+  void at_cell(int cell_x0, int cell_y0, CellPlane out[3]) const {
+    const int64_t px = int64_t{cell_x0} * kSubpixelScale + kSubpixelScale / 2;
+    const int64_t py = int64_t{cell_y0} * kSubpixelScale + kSubpixelScale / 2;
+    const double l1 = static_cast<double>(t_.edge[1].at(px, py)) * t_.inv_area2;
+    const double l2 = static_cast<double>(t_.edge[2].at(px, py)) * t_.inv_area2;
+    const double z = t_.depth[0] + l1 * dz1_ + l2 * dz2_;
+    out[0] = {static_cast<float>(l1), gradients_[0], gradients_[1]};
+    out[1] = {static_cast<float>(l2), gradients_[2], gradients_[3]};
+    out[2] = {static_cast<float>(z), gradients_[4], gradients_[5]};
+  }
 
  private:
   const TriangleSetup& t_;
-  double l1_dx_, l1_dy_, l2_dx_, l2_dy_, z_dx_, z_dy_;  // per pixel
+  double dz1_, dz2_;  // depth[1] - depth[0], depth[2] - depth[0]
+  float gradients_[6];  // l1, l2, z per pixel along x and y, rounded to float
 };
 
 // Bounds of the depth plane `depth` (from at_cell for the cell at cell_x0, cell_y0) over the
 // sample area of pixels [x0, x1) x [y0, y1), widened by the float evaluation's error bound
 // (docs/rasterization.md): every depth interpolate_cell_depth() returns there lies in
-// [min_out, max_out] before clamping.
-void cell_depth_bounds(const CellPlane& depth, int cell_x0, int cell_y0, int x0, int y0, int x1,
-                       int y1, double& min_out, double& max_out);
+// [min_out, max_out] before clamping. Inline: asked once per covered cell.
+inline void cell_depth_bounds(const CellPlane& z, int cell_x0, int cell_y0, int x0, int y0, int x1,
+                              int y1, double& min_out, double& max_out) {
+  // Sample offsets from the top-left pixel centre span [x0 - cell_x0 - 0.5, x1 - cell_x0 - 0.5].
+  const double fx_lo = x0 - cell_x0 - 0.5, fx_hi = x1 - cell_x0 - 0.5;
+  const double fy_lo = y0 - cell_y0 - 0.5, fy_hi = y1 - cell_y0 - 0.5;
+  const double zx_lo = std::min(z.dx * fx_lo, z.dx * fx_hi), zx_hi = std::max(z.dx * fx_lo, z.dx * fx_hi);
+  const double zy_lo = std::min(z.dy * fy_lo, z.dy * fy_hi), zy_hi = std::max(z.dy * fy_lo, z.dy * fy_hi);
+  // The float evaluation fl(fl(o + fl(dx fx)) + fl(dy fy)) of the float-rounded plane differs
+  // from this (exactly evaluated) float plane by at most 3 roundings of the largest partial
+  // magnitude; 8 units of 2^-24 is a safe margin (docs/rasterization.md).
+  const double magnitude = std::abs(static_cast<double>(z.origin)) +
+                           std::abs(static_cast<double>(z.dx)) * kCellSizePx +
+                           std::abs(static_cast<double>(z.dy)) * kCellSizePx;
+  const double margin = magnitude * 8.0 * 0x1p-24 + 0x1p-126;
+  min_out = z.origin + zx_lo + zy_lo - margin;
+  max_out = z.origin + zx_hi + zy_hi + margin;
+}
 
 // Depth of the plane at every pixel of a cell, at sample offset (sx, sy) in 1/256 px from the
 // pixel's top-left corner, clamped to [0, 1] (Vulkan clamps before the depth test): out[64],
@@ -147,6 +183,15 @@ void interpolate_whole_quads(const InterpolationInput& in, const QuadOrigins& qu
 CellMask depth_test_cell(CompareOp op, bool test, bool write, const float z[kCellPixels],
                          float* stored, int stride, int cols, int rows, CellMask candidates,
                          float* range_lo = nullptr, float* range_hi = nullptr);
+
+// interpolate_cell_depth(depth, sx, sy, z, first_row, end_row) then depth_test_cell(op, test,
+// write, z, stored, stride, 8, rows, candidates, range_lo, range_hi) in one call: a cell whose
+// top-left pixel is in the tile and whose whole width is (the common single-sample case).
+CellMask interpolate_and_test_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy,
+                                         int first_row, int end_row, float z[kCellPixels],
+                                         CompareOp op, bool test, bool write, float* stored,
+                                         int stride, int rows, CellMask candidates,
+                                         float* range_lo = nullptr, float* range_hi = nullptr);
 
 // The minimum and maximum of `rows` rows of `count` stored depths, `stride` floats apart (what
 // hierarchical Z keeps per cell). A NaN is never chosen unless it is first[0].

@@ -38,7 +38,8 @@ void reference_cell(const TriangleSetup& t, const SamplePattern& p, int cx, int 
 }
 
 // Compares every cell of the target for `count` random triangles spanning up to `extent_px`.
-void expect_cells_match(double extent_px, int count, uint32_t seed, int* int64_cells = nullptr) {
+void expect_cells_match(double extent_px, int count, uint32_t seed, int* int64_cells = nullptr,
+                        int* small_triangles = nullptr) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> centre_x(-20.0, kWidth + 20.0), centre_y(-20.0, kHeight + 20.0);
   std::uniform_real_distribution<double> offset(-extent_px, extent_px), w(0.5, 3.0);
@@ -49,6 +50,7 @@ void expect_cells_match(double extent_px, int count, uint32_t seed, int* int64_c
     for (auto& c : clip) c = clip_of_pixel(x + offset(rng), y + offset(rng), w(rng));
     TriangleSetup t;
     if (setup_triangle(clip, kWidth, kHeight, CullMode::None, FrontFace::CounterClockwise, t) != SetupResult::Ok) continue;
+    if (small_triangles && CellEdges(t).small) ++*small_triangles;
     if (int64_cells) {
       for (const EdgeFunction& e : t.edge) {
         if (std::abs(e.a) + std::abs(e.b) > (int64_t{1} << 19)) ++*int64_cells;
@@ -76,8 +78,25 @@ void expect_cells_match(double extent_px, int count, uint32_t seed, int* int64_c
   EXPECT_GT(compared, 0);
 }
 
-TEST(CellRaster, CoverageEqualsTheScalarWalkerForSmallTriangles) { expect_cells_match(6.0, 300, 1); }
-TEST(CellRaster, CoverageEqualsTheScalarWalkerForMediumTriangles) { expect_cells_match(60.0, 200, 2); }
+// Small triangles take CellEdges' all-int32 path (every cell of the target compared, those
+// far from the triangle included); medium ones both paths.
+TEST(CellRaster, CoverageEqualsTheScalarWalkerForSmallTriangles) {
+  int small = 0;
+  expect_cells_match(6.0, 300, 1, nullptr, &small);
+  EXPECT_GT(small, 150);
+}
+TEST(CellRaster, CoverageEqualsTheScalarWalkerForMediumTriangles) {
+  int small = 0;
+  expect_cells_match(60.0, 200, 2, nullptr, &small);
+  EXPECT_GT(small, 10);
+  EXPECT_LT(small, 190);
+}
+// Triangles around the size limit of the int32 path (spans up to 200 px: some small, most not).
+TEST(CellRaster, CoverageEqualsTheScalarWalkerAtTheSmallTriangleLimit) {
+  int small = 0;
+  expect_cells_match(100.0, 200, 4, nullptr, &small);
+  EXPECT_GT(small, 5);
+}
 
 // cells_trivially_accepted (the tile executor's one test per tile): whenever it accepts a block
 // of cells, cell_coverage gives every cell of the block its valid mask at every sample count.

@@ -35,23 +35,30 @@ constexpr std::array<QuadCoverage, 16> kSpreadLanes = [] {
 }();
 inline QuadCoverage spread_lanes(uint32_t lanes, int s) { return kSpreadLanes[lanes & 0xFu] << s; }
 
+// A pixel row's bit pairs moved from bit 2k to 4k (bits 0-7 to the nibbles' low halves), one
+// entry per row pattern: a lookup where the shifts and masks cost ~7 instructions per row.
+constexpr std::array<uint16_t, 256> kSpreadPairs = [] {
+  std::array<uint16_t, 256> table{};
+  for (uint32_t x = 0; x < 256; ++x) {
+    uint32_t v = (x | (x << 4)) & 0x0F0Fu;
+    table[x] = static_cast<uint16_t>((v | (v << 2)) & 0x3333u);
+  }
+  return table;
+}();
+
 // The quad lanes of a cell's quad row: `rows` holds its two pixel rows (bits 0-7 the upper,
 // 8-15 the lower); nibble k of the result is quad_lanes of the quad at column 2k (lanes 0, 1
-// from the upper row, 2, 3 from the lower). Each row's bit pairs move from bit 2k to 4k.
+// from the upper row, 2, 3 from the lower).
 inline uint32_t quad_row_lanes(uint32_t rows) {
-  const auto spread_pairs = [](uint32_t x) {
-    x = (x | (x << 4)) & 0x0F0Fu;
-    return (x | (x << 2)) & 0x3333u;
-  };
-  return spread_pairs(rows & 0xFFu) | (spread_pairs(rows >> kCellSizePx) << 2);
+  return kSpreadPairs[rows & 0xFFu] | (uint32_t{kSpreadPairs[(rows >> kCellSizePx) & 0xFFu]} << 2);
 }
 
-// Set bits of a 16-bit value, without the popcount instruction the baseline target lacks.
-inline uint32_t bit_count16(uint32_t x) {
-  x = x - ((x >> 1) & 0x5555u);
-  x = (x & 0x3333u) + ((x >> 2) & 0x3333u);
-  x = (x + (x >> 4)) & 0x0F0Fu;
-  return (x + (x >> 8)) & 0x1Fu;
+// Set bits of a 64-bit value, without the popcount instruction the baseline target lacks.
+inline uint64_t bit_count64(uint64_t x) {
+  x = x - ((x >> 1) & 0x5555555555555555u);
+  x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+  x = (x + (x >> 4)) & 0x0F0F0F0F0F0F0F0Fu;
+  return (x * 0x0101010101010101u) >> 56;
 }
 
 // True when the triangle covers every pixel of the tile at one sample and every pixel passed
@@ -84,8 +91,8 @@ bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
 
 // The single-sample walk: quad row by quad row, the cells of the triangle's bounding box
 // with covered pixels in it. A quad's lanes are its coverage (lanes_of of the spread bits); the
-// early-depth rejections of a cell's quad row are counted at once (its quads partition its 16
-// pixels), as the per-quad sums.
+// early-depth rejections are counted per cell (its quads partition its covered pixels, and the
+// walk visits every covered pixel once), as the per-quad sums.
 [[gnu::noinline]] void queue_single_sample_quads(const TriangleContext& ctx, const TileCells& cells,
                                                  int y_begin, int y_end, int ci_begin, int ci_end,
                                                  bool whole_rows, TileCounters& counters,
@@ -97,6 +104,12 @@ bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
   // Early Z drops a quad with no passing lane unless the IMR model records its accesses.
   const bool drop_failed = early_z && !ctx.fragments;
   uint64_t rejected = 0;
+  if (early_z) {
+    for (const int cell : scratch.touched) {
+      const CellMask failed = states[cell].covered_any & ~states[cell].passing[0];
+      if (failed) rejected += bit_count64(failed);
+    }
+  }
   for (int qy = y_begin; qy < y_end; qy += 2) {
     const int cj = (qy - cells.first_y) / kCellSizePx;
     const int shift = (qy & (kCellSizePx - 1)) * kCellSizePx;
@@ -117,7 +130,6 @@ bool covers_whole_tile(const TriangleContext& ctx, const TileCells& cells,
         }
         continue;
       }
-      if (early_z) rejected += bit_count16(rows & ~passing_rows);
       const uint32_t covered_lanes = quad_row_lanes(rows);
       const uint32_t passing_lanes = quad_row_lanes(passing_rows);
       // Nibble k non-zero: the quad at column 2k has a covered lane. Ascending x: the tile's

@@ -111,15 +111,30 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, TileMem
         // and the late depth write read covered pixels only).
         const int first_row = std::countr_zero(st.covered[s]) / kCellSizePx;
         const int end_row = (kCellPixels - 1 - std::countl_zero(st.covered[s])) / kCellSizePx + 1;
-        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z, first_row, end_row);
-        if (ctx.depth_unorm_bits) {
-          for (int i = first_row * kCellSizePx; i < end_row * kCellSizePx; ++i) z[i] = ctx.quantize_depth(z[i]);
-        }
         // A tile narrower than a cell (budget-reduced tiles) starts inside it at (lx0, ly0).
         const int lx0 = std::max(cx, rect.x0) - cx, ly0 = std::max(cy, rect.y0) - cy;
         float* stored = memory.depth_plane() + memory.index(cx + lx0 - rect.x0, cy + ly0 - rect.y0, s);
         const int shift = ly0 * kCellSizePx + lx0;
         const bool write_now = ctx.depth_write && !ctx.late_z;
+        if (samples == 1 && shift == 0 && cols == kCellSizePx && !ctx.depth_unorm_bits) {
+          // The usual cell: interpolation and depth test in one call, as below.
+          const bool range_now = write_now && ctx.hiz_tracked;
+          float lo = 0.0f, hi = 0.0f;
+          st.passing[s] = interpolate_and_test_cell_depth(
+              st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], first_row, end_row, z,
+              ctx.draw.raster.depth_compare, ctx.depth_test, write_now, stored, memory.width(), rows,
+              st.covered[s], range_now ? &lo : nullptr, range_now ? &hi : nullptr);
+          if (range_now && st.passing[s]) {
+            scratch.hiz.set(cell, lo, hi);
+            continue;
+          }
+          wrote = wrote || (write_now && st.passing[s]);
+          continue;
+        }
+        interpolate_cell_depth(st.planes[2], ctx.pattern.x[s], ctx.pattern.y[s], z, first_row, end_row);
+        if (ctx.depth_unorm_bits) {
+          for (int i = first_row * kCellSizePx; i < end_row * kCellSizePx; ++i) z[i] = ctx.quantize_depth(z[i]);
+        }
         if (samples == 1) {
           // A whole-width cell's new depth bounds come from the test's own pass over the rows.
           const bool range_now = write_now && ctx.hiz_tracked && cols == kCellSizePx;
