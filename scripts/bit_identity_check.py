@@ -60,6 +60,9 @@ def render(args):
                                check=True, stdout=subprocess.DEVNULL)
                 with open(stem + ".raw.json") as f:
                     report = without_timing(json.load(f))
+                # The scene's path says where the run was made (a worktree, an output folder
+                # holding the generated atrium), not what was rendered: two checkouts must agree.
+                report["run"]["scene"] = os.path.basename(report["run"]["scene"])
                 os.remove(stem + ".raw.json")
                 with open(stem + ".json", "w") as f:
                     json.dump(report, f, indent=1, sort_keys=True)
