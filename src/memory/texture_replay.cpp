@@ -28,6 +28,7 @@
 #include "memory/texture_replay_kernel.h"
 #include "memory/texture_replay_observer.h"
 #include "memory/texture_replay_stream.h"
+#include "memory/trace_repeats.h"
 #include "util/parallel_for.h"
 
 namespace ontile {
@@ -85,7 +86,19 @@ void split_tile(std::span<const uint64_t> granules, int line_shift, int group_bi
   // Shaders sampling two textures alternate between them every few granules: the region before
   // the last one is checked before the tile's list.
   uint64_t last_id = ~uint64_t{0}, previous_id = ~uint64_t{0};
-  for (const uint64_t granule : granules) {
+  for (size_t i = 0; i < granules.size(); ++i) {
+    const uint64_t granule = granules[i];
+    if (is_trace_repeat(granule)) {
+      // A repeat of the window before it: each group repeats the window's granules of its own
+      // (a group's accesses in order are then exactly what the expanded trace gives it).
+      const uint32_t window = trace_repeat_window(granule);
+      uint32_t in_group[size_t{1} << kPlacementAlignmentBits] = {};
+      for (size_t k = i - window; k < i; ++k) ++in_group[(granules[k] >> line_shift) & group_mask];
+      for (size_t k = 0; k < groups; ++k) {
+        if (in_group[k] != 0) *write[k]++ = trace_repeat(in_group[k], trace_repeat_count(granule));
+      }
+      continue;
+    }
     const uint64_t id = granule >> kRegionShift;
     if (id != last_id) {
       const uint64_t left = last_id;
@@ -160,7 +173,7 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
     const ReplayScratch::Tile& tile = scratch->tiles[t];
     const std::vector<uint64_t>& ids = scratch->workers[tile.worker].region_ids;
     for (uint32_t i = tile.region_ids_begin; i < tile.region_ids_end; ++i) cache.place(ids[i]);
-    accesses += traces[t].texture_granules.size();
+    accesses += traced_accesses(traces[t].texture_granules);
   }
   // 3. Each group's accesses in tile order, on its own copy of its sets.
   std::vector<uint64_t> group_misses(groups, 0);
@@ -174,7 +187,8 @@ TextureTraffic replay_parallel(TextureCache& cache, const std::vector<TileTrace>
     for (size_t t = 0; t < tile_count; ++t) {
       const size_t* range = &scratch->group_ranges[2 * (t * groups + k)];
       const uint64_t* granules = scratch->workers[scratch->tiles[t].worker].groups[k].data();
-      const uint64_t tile_misses = replay_granules(group, regions, granules + range[0], range[1] - range[0]);
+      const uint64_t tile_misses =
+          replay_granules(group, regions, granules + range[0], range[1] - range[0]).misses;
       group_tile_misses[k][t] = tile_misses;
       misses += tile_misses;
     }
@@ -228,10 +242,10 @@ TextureReplayStream::~TextureReplayStream() = default;
 
 void TextureReplayStream::replay_tile(size_t tile) {
   const std::vector<uint64_t>& granules = traces_[tile].texture_granules;
-  accesses_ += granules.size();
-  const uint64_t tile_misses = replay_granules(cache_.sets(), regions_, granules.data(), granules.size());
-  detail_.misses_per_tile[tile] = tile_misses;
-  misses_ += tile_misses;
+  const ReplayedGranules replayed = replay_granules(cache_.sets(), regions_, granules.data(), granules.size());
+  accesses_ += replayed.accesses;
+  detail_.misses_per_tile[tile] = replayed.misses;
+  misses_ += replayed.misses;
   if (give_back_when_replayed_) give_back_granule_buffer((*buffers_to_give_back_)[tile].texture_granules);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "memory/texture_cache.h"
+#include "memory/trace_repeats.h"
 
 namespace ontile {
 
@@ -68,10 +69,18 @@ struct RegionTable {
   }
 };
 
-// Every granule of [granules, granules + count) in order: frame granule = granule + its region's
-// offset, then sets.access. Returns the number of misses, which are also counted per region in
-// `regions`.
-uint64_t replay_granules(const SetArray& sets, RegionTable& regions, const uint64_t* granules,
-                         size_t count);
+// What a replay of a trace counted: its accesses (repeat entries expanded) and misses.
+struct ReplayedGranules {
+  uint64_t accesses = 0;
+  uint64_t misses = 0;
+};
+
+// Every entry of the trace [granules, granules + count) in order (a repeat entry, trace_repeats.h,
+// standing for its window's accesses again): frame granule = granule + its region's offset, then
+// sets.access. The misses are also counted per region in `regions`. A repeat entry's window must
+// lie in [granules, granules + count); here any window size >= 1 is accepted (the parallel
+// replay's set groups keep a window's granules of their group, which may be one).
+ReplayedGranules replay_granules(const SetArray& sets, RegionTable& regions,
+                                 const uint64_t* granules, size_t count);
 
 }  // namespace ontile

@@ -346,6 +346,53 @@ class RecentHits {
   int line_shift_, index_shift_;
 };
 
+template <bool kPlain, size_t kOlderWays>
+uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
+                              const uint64_t* granules, size_t count, uint64_t& extra_accesses);
+
+// Whether every granule of [granules, granules + count), taken with its slot's offset, is its
+// set's most recent way. A granule whose region is not its slot's never is (RegionTable).
+template <bool kPlain>
+HWY_INLINE bool AllMostRecent(const SetArray& sets, const RegionTable& regions,
+                              const uint64_t* granules, size_t count) {
+  for (size_t k = 0; k < count; ++k) {
+    const uint64_t granule = granules[k];
+    const uint64_t frame =
+        granule + regions.offsets[(granule >> kRegionShift) & (RegionTable::kSlots - 1)];
+    uint64_t line = frame;
+    uint32_t set;
+    if constexpr (kPlain) {
+      set = static_cast<uint32_t>(line & (sets.sets - 1));
+    } else {
+      line >>= sets.line_shift;
+      set = sets.index_of_line(line);
+    }
+    if (sets.tags[set] != line) return false;
+  }
+  return true;
+}
+
+// The repeat entry at `entry` (trace_repeats.h), its window just replayed before it: the window
+// again, as many times as the entry says. Once a pass over the window leaves every one of its
+// granules the most recent way of its set, another pass hits every time and changes nothing, so
+// the passes left are counted as hits without replaying them; until then (granules of the window
+// sharing a set) each pass is replayed. Adds the accesses the entry stands for, less the one its
+// entry was counted as, to `extra_accesses`; returns the misses.
+template <bool kPlain, size_t kOlderWays>
+HWY_NOINLINE uint64_t ReplayRepeat(const SetArray& sets, RegionTable& regions,
+                                   const uint64_t* entry, uint64_t& extra_accesses) {
+  const uint32_t size = trace_repeat_window(*entry), repeats = trace_repeat_count(*entry);
+  const uint64_t* const window = entry - size;
+  extra_accesses += uint64_t{size} * repeats - 1;
+  uint64_t misses = 0;
+  for (uint32_t pass = 0; pass < repeats; ++pass) {
+    if (AllMostRecent<kPlain>(sets, regions, window, size)) break;
+    uint64_t none = 0;  // a window holds no repeat entry
+    misses += ReplayPowerOfTwoSets<kPlain, kOlderWays>(sets, regions, window, size, none);
+  }
+  return misses;
+}
+
 // Granules [i, end) one at a time for the default 16-way cache with power-of-two sets: a hit in
 // either of the set's two most recent ways is taken without a branch on which (a way-1 hit
 // swaps the two), so the only data-dependent branch is the one into AccessAllWays. For streams
@@ -354,10 +401,15 @@ class RecentHits {
 // Returns the misses; `breaks` counts the accesses that missed the most recent way.
 template <bool kPlain>
 HWY_INLINE uint64_t ReplayTopTwoScalar(const SetArray& sets, RegionTable& regions,
-                                       const uint64_t* granules, size_t count, size_t& breaks) {
+                                       const uint64_t* granules, size_t count, size_t& breaks,
+                                       uint64_t& extra_accesses) {
   constexpr size_t kOlderWays = 15;
   uint64_t misses = 0;
   for (size_t i = 0; i < count; ++i) {
+    if (HWY_UNLIKELY(is_trace_repeat(granules[i]))) {
+      misses += ReplayRepeat<kPlain, kOlderWays>(sets, regions, granules + i, extra_accesses);
+      continue;
+    }
     const auto [slot, line, recent, row] = Place<kPlain, kOlderWays>(sets, regions, granules[i]);
     const uint64_t way0 = *recent, way1 = row[0];
     const bool in_way1 = way1 == line;
@@ -384,7 +436,7 @@ HWY_INLINE uint64_t ReplayTopTwoScalar(const SetArray& sets, RegionTable& region
 // or 32 on every captured frame.
 template <bool kPlain, size_t kOlderWays>
 uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
-                              const uint64_t* granules, size_t count) {
+                              const uint64_t* granules, size_t count, uint64_t& extra_accesses) {
   constexpr size_t kBlock = 512;
   constexpr size_t kScalarBreakRatio = 8;
   const RecentHits<kPlain, kOlderWays> recent_hits(sets, regions);
@@ -395,15 +447,19 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
     const size_t end = count - i > kBlock ? i + kBlock : count;
     size_t breaks = 0;
     if (scalar) {
-      misses += ReplayTopTwoScalar<kPlain>(sets, regions, granules + i, end - i, breaks);
+      misses += ReplayTopTwoScalar<kPlain>(sets, regions, granules + i, end - i, breaks, extra_accesses);
       i = end;
     } else {
       while (true) {
         i += recent_hits.Leading(granules + i, end - i, breaks, misses);
         if (i == end) break;
         // Leading stopped at a granule whose region is not in its slot (or, in a one-way
-        // cache, that missed).
-        misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
+        // cache, that missed), or at a repeat entry (its "region" is never a slot's).
+        if (is_trace_repeat(granules[i])) {
+          misses += ReplayRepeat<kPlain, kOlderWays>(sets, regions, granules + i, extra_accesses);
+        } else {
+          misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
+        }
         ++i;
         ++breaks;
       }
@@ -413,19 +469,38 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
   return misses;
 }
 
-uint64_t ReplayGranulesKernel(const SetArray& sets, RegionTable& regions,
-                              const uint64_t* granules, size_t count) {
+// The general sets (not a power of two): every access the long way, a repeat entry's window
+// replayed again as many times as it says.
+uint64_t ReplayAnySets(const SetArray& sets, RegionTable& regions, const uint64_t* granules,
+                       size_t count, uint64_t& extra_accesses) {
+  uint64_t misses = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if (!is_trace_repeat(granules[i])) {
+      misses += !AccessOne<false, 0>(sets, regions, granules[i]);
+      continue;
+    }
+    const uint32_t size = trace_repeat_window(granules[i]), repeats = trace_repeat_count(granules[i]);
+    extra_accesses += uint64_t{size} * repeats - 1;
+    for (uint32_t pass = 0; pass < repeats; ++pass) {
+      for (size_t k = i - size; k < i; ++k) misses += !AccessOne<false, 0>(sets, regions, granules[k]);
+    }
+  }
+  return misses;
+}
+
+ReplayedGranules ReplayGranulesKernel(const SetArray& sets, RegionTable& regions,
+                                      const uint64_t* granules, size_t count) {
+  uint64_t extra = 0, misses;
   if (!sets.sets_are_power_of_two) {
-    uint64_t misses = 0;
-    for (size_t i = 0; i < count; ++i) misses += !AccessOne<false, 0>(sets, regions, granules[i]);
-    return misses;
+    misses = ReplayAnySets(sets, regions, granules, count, extra);
+  } else if (sets.line_shift == 0 && sets.index_shift == 0) {
+    misses = sets.ways == 16 ? ReplayPowerOfTwoSets<true, 15>(sets, regions, granules, count, extra)
+                             : ReplayPowerOfTwoSets<true, 0>(sets, regions, granules, count, extra);
+  } else {
+    misses = sets.ways == 16 ? ReplayPowerOfTwoSets<false, 15>(sets, regions, granules, count, extra)
+                             : ReplayPowerOfTwoSets<false, 0>(sets, regions, granules, count, extra);
   }
-  if (sets.line_shift == 0 && sets.index_shift == 0) {
-    if (sets.ways == 16) return ReplayPowerOfTwoSets<true, 15>(sets, regions, granules, count);
-    return ReplayPowerOfTwoSets<true, 0>(sets, regions, granules, count);
-  }
-  if (sets.ways == 16) return ReplayPowerOfTwoSets<false, 15>(sets, regions, granules, count);
-  return ReplayPowerOfTwoSets<false, 0>(sets, regions, granules, count);
+  return {count + extra, misses};
 }
 
 }  // namespace HWY_NAMESPACE
@@ -437,8 +512,8 @@ namespace ontile {
 
 HWY_EXPORT(ReplayGranulesKernel);
 
-uint64_t replay_granules(const SetArray& sets, RegionTable& regions, const uint64_t* granules,
-                         size_t count) {
+ReplayedGranules replay_granules(const SetArray& sets, RegionTable& regions,
+                                 const uint64_t* granules, size_t count) {
   return HWY_DYNAMIC_DISPATCH(ReplayGranulesKernel)(sets, regions, granules, count);
 }
 

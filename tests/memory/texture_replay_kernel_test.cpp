@@ -16,6 +16,7 @@
 #include "memory/set_associative_cache.h"
 #include "memory/texture_cache.h"
 #include "memory/texture_replay_kernel.h"
+#include "memory/trace_repeats.h"
 #include "raster/cell_raster.h"
 
 namespace ontile {
@@ -177,16 +178,19 @@ void expect_replays_as_plain_lru(const Shape& shape, const std::vector<std::vect
   uint64_t hits = 0, misses = 0;
   for (const std::vector<uint64_t>& call : calls) {
     uint64_t expected = 0;
-    for (const uint64_t g : call) {
+    const std::vector<uint64_t> expanded = expand_trace_repeats(call);
+    for (const uint64_t g : expanded) {
       const uint64_t id = g >> kRegionShift;
       if (!reference.access(g + reference_placement.offset(id))) {
         ++expected;
         ++expected_by_region[id];
       }
     }
-    ASSERT_EQ(replay_granules(sets, regions, call.data(), call.size()), expected) << what;
+    const ReplayedGranules replayed = replay_granules(sets, regions, call.data(), call.size());
+    ASSERT_EQ(replayed.misses, expected) << what;
+    ASSERT_EQ(replayed.accesses, expanded.size()) << what;
     misses += expected;
-    hits += call.size() - expected;
+    hits += expanded.size() - expected;
   }
   // Both outcomes occur (but a cache of one line never hits: repeats are merged when traced).
   if (shape.sets * shape.ways > 1) EXPECT_GT(hits, 500u) << what;
@@ -306,6 +310,82 @@ TEST(TextureReplayKernel, CopyTracesMissingInsideVectorsReplayAsThePlainLruOnEve
       expect_replays_as_plain_lru(shape, calls, name_of(shape) + ", copy trace, target " + target);
     }
   }
+}
+
+// `calls` with repeat entries (trace_repeats.h) put in at random points: the last W entries of
+// the call so far (1 to 40 of them, none a repeat entry) again R times (1 to 30). Windows of one
+// line per set (whose passes after the first all hit), of lines sharing sets or a region slot
+// (replayed pass by pass), of one entry (as the parallel replay's groups may hold).
+std::vector<std::vector<uint64_t>> with_repeats(const std::vector<std::vector<uint64_t>>& calls,
+                                                uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::vector<uint64_t>> folded;
+  for (const std::vector<uint64_t>& call : calls) {
+    std::vector<uint64_t> out;
+    size_t granules_since_repeat = 0;
+    for (const uint64_t g : call) {
+      out.push_back(g);
+      ++granules_since_repeat;
+      if (rng() % 6 == 0) {
+        const size_t window = 1 + rng() % std::min<size_t>(granules_since_repeat, 40);
+        out.push_back(trace_repeat(static_cast<uint32_t>(window), static_cast<uint32_t>(1 + rng() % 30)));
+        granules_since_repeat = 0;
+      }
+    }
+    folded.push_back(std::move(out));
+  }
+  return folded;
+}
+
+TEST(TextureReplayKernel, RepeatEntriesReplayAsTheirExpansionOnEveryTarget) {
+  const AutomaticTargetOnExit restore;
+  const Shape shapes[] = {{256, 16, 0, 0}, {16, 16, 0, 0}, {64, 4, 0, 0}, {32, 1, 0, 0},
+                          {48, 16, 0, 0},  {7, 3, 0, 0},   {64, 16, 2, 0}, {128, 16, 0, 1},
+                          {12, 5, 2, 1},   {1, 16, 0, 0}};
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (const Shape& shape : shapes) {
+      for (uint64_t seed = 1; seed <= 2; ++seed) {
+        expect_replays_as_plain_lru(shape, with_repeats(adversarial_calls(shape, seed), seed),
+                                    name_of(shape) + ", repeats, seed " + std::to_string(seed) +
+                                        ", target " + target);
+      }
+    }
+  }
+}
+
+TEST(TraceRepeats, FolderMakesRepeatEntriesThatExpandToTheChunks) {
+  // Chunks as a producer appends them: A B twice, then A B three more times, C D, C D, a chunk
+  // of one granule (never folded), E F, E F, then E F written without fold (adjacency broken).
+  const std::vector<std::vector<uint64_t>> chunks = {{1, 2}, {1, 2}, {1, 2}, {1, 2}, {1, 2},
+                                                     {3, 4}, {3, 4}, {5},    {6, 7}, {6, 7}};
+  std::vector<uint64_t> trace, plain;
+  TraceRepeatFolder folder;
+  for (const std::vector<uint64_t>& chunk : chunks) {
+    const size_t begin = trace.size();
+    trace.insert(trace.end(), chunk.begin(), chunk.end());
+    plain.insert(plain.end(), chunk.begin(), chunk.end());
+    folder.fold(trace, begin);
+  }
+  trace.push_back(6);
+  trace.push_back(7);
+  plain.push_back(6);
+  plain.push_back(7);
+  folder.fold(trace, trace.size() - 2);  // adjacent to the repeat entry after 6 7: folded
+  const std::vector<uint64_t> expected = {1, 2, trace_repeat(2, 4), 3, 4, trace_repeat(2, 1),
+                                          5, 6, 7, trace_repeat(2, 2)};
+  EXPECT_EQ(trace, expected);
+  EXPECT_EQ(expand_trace_repeats(trace), plain);
+  EXPECT_EQ(traced_accesses(trace), plain.size());
+  // A granule appended without fold breaks adjacency: the next equal chunk is not folded.
+  trace.push_back(9);
+  plain.push_back(9);
+  const size_t begin = trace.size();
+  trace.insert(trace.end(), {6, 7});
+  plain.insert(plain.end(), {6, 7});
+  folder.fold(trace, begin);
+  EXPECT_EQ(trace.size(), expected.size() + 3);
+  EXPECT_EQ(expand_trace_repeats(trace), plain);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "raster/texture.h"
 #include "memory/texture_cache.h"
+#include "memory/trace_repeats.h"
 
 namespace ontile {
 
@@ -44,8 +45,8 @@ class ReferenceLru {
     }
     return it->second + (traced & ((uint64_t{1} << 34) - 1));
   }
-  // Tiles in index order, each a range of traced granules; fills `detail` (misses per tile and
-  // per region id) when given.
+  // Tiles in index order, each a range of traced granules (repeat entries expanded,
+  // trace_repeats.h); fills `detail` (misses per tile and per region id) when given.
   template <class Tiles>
   TextureTraffic replay(const Tiles& tiles, uint32_t line_bytes,
                         TextureReplayDetail* detail = nullptr) {
@@ -53,7 +54,7 @@ class ReferenceLru {
     if (detail) *detail = TextureReplayDetail{};
     for (const auto& tile : tiles) {
       uint64_t tile_misses = 0;
-      for (const uint64_t g : tile) {
+      for (const uint64_t g : expand_trace_repeats(std::span<const uint64_t>(tile.data(), tile.size()))) {
         ++t.accesses;
         if (access(frame_granule(g))) {
           ++t.hits;

@@ -20,6 +20,7 @@
 #include "raster/texture.h"
 #include "memory/texture_replay_stream.h"
 #include "memory/granule_buffer_pool.h"
+#include "memory/trace_repeats.h"
 #include "util/parallel_for.h"
 #include "tiler/reference_lru.h"
 
@@ -237,6 +238,30 @@ TEST(TextureCacheLru, SampledTracesReplayAsThePlainLruAtAnyThreadCount) {
   // The second pass reads the same textures again, partly from the cache.
   expect_replay_matches_reference(
       tiles, std::vector<std::vector<uint64_t>>(tiles.rbegin(), tiles.rend()));
+}
+
+// Tiles with repeat entries (memory/trace_repeats.h): after a random granule, now and then the
+// last 2 to 24 granules of the tile again 1 to 40 times, so the parallel replay's set groups
+// split windows (a group may keep one granule of a window, or none).
+TEST(TextureCacheLru, TracesWithRepeatEntriesReplayAsThePlainLruAtAnyThreadCount) {
+  std::mt19937_64 rng(5);
+  const auto folded = [&](std::vector<std::vector<uint64_t>> tiles) {
+    for (std::vector<uint64_t>& tile : tiles) {
+      std::vector<uint64_t> out;
+      size_t since_repeat = 0;
+      for (const uint64_t g : tile) {
+        out.push_back(g);
+        if (++since_repeat >= 2 && rng() % 5 == 0) {
+          const size_t window = 2 + rng() % std::min<size_t>(since_repeat - 1, 23);
+          out.push_back(trace_repeat(static_cast<uint32_t>(window), static_cast<uint32_t>(1 + rng() % 40)));
+          since_repeat = 0;
+        }
+      }
+      tile = std::move(out);
+    }
+    return tiles;
+  };
+  expect_replay_matches_reference(folded(random_tiles(3, 300)), folded(sampled_tiles()));
 }
 
 TEST(GranuleBufferPool, GivenBackBuffersComeBackEmptyWithTheirCapacity) {
