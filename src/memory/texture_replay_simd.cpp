@@ -141,9 +141,9 @@ struct PlacedGranule {
   uint64_t* row;
 };
 template <bool kPlain, size_t kOlderWays>
-HWY_INLINE PlacedGranule Place(const SetArray& sets, RegionTable& regions, uint64_t granule) {
+HWY_INLINE PlacedGranule PlaceAt(const SetArray& sets, uint64_t granule, uint64_t offset) {
   const uint64_t id = granule >> kRegionShift;
-  uint64_t line = granule + regions.offset(id);
+  uint64_t line = granule + offset;
   uint32_t set;
   if constexpr (kPlain) {
     set = static_cast<uint32_t>(line & (sets.sets - 1));
@@ -154,6 +154,11 @@ HWY_INLINE PlacedGranule Place(const SetArray& sets, RegionTable& regions, uint6
   const size_t older_ways = kOlderWays != 0 ? kOlderWays : sets.ways - 1;
   return {id & (RegionTable::kSlots - 1), line, sets.tags + set,
           sets.tags + sets.sets + static_cast<size_t>(set) * older_ways};  // older_of
+}
+// Place with the region's offset resolved (if new) from the table.
+template <bool kPlain, size_t kOlderWays>
+HWY_INLINE PlacedGranule Place(const SetArray& sets, RegionTable& regions, uint64_t granule) {
+  return PlaceAt<kPlain, kOlderWays>(sets, granule, regions.offset(granule >> kRegionShift));
 }
 
 // One granule the long way, in stream order: its region's offset (resolved if new), then the full
@@ -406,11 +411,18 @@ HWY_INLINE uint64_t ReplayTopTwoScalar(const SetArray& sets, RegionTable& region
   constexpr size_t kOlderWays = 15;
   uint64_t misses = 0;
   for (size_t i = 0; i < count; ++i) {
-    if (HWY_UNLIKELY(is_trace_repeat(granules[i]))) {
-      misses += ReplayRepeat<kPlain, kOlderWays>(sets, regions, granules + i, extra_accesses);
-      continue;
+    // A repeat entry's "region" is never in its slot, so it is looked for only there.
+    const uint64_t id = granules[i] >> kRegionShift;
+    const size_t id_slot = id & (RegionTable::kSlots - 1);
+    uint64_t offset = regions.offsets[id_slot];
+    if (HWY_UNLIKELY(regions.ids[id_slot] != id)) {
+      if (is_trace_repeat(granules[i])) {
+        misses += ReplayRepeat<kPlain, kOlderWays>(sets, regions, granules + i, extra_accesses);
+        continue;
+      }
+      offset = regions.offset(id);
     }
-    const auto [slot, line, recent, row] = Place<kPlain, kOlderWays>(sets, regions, granules[i]);
+    const auto [slot, line, recent, row] = PlaceAt<kPlain, kOlderWays>(sets, granules[i], offset);
     const uint64_t way0 = *recent, way1 = row[0];
     const bool in_way1 = way1 == line;
     breaks += way0 == line ? 0 : 1;
