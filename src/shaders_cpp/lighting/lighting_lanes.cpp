@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "raster/lane_bits.h"
+#include "raster/lane_bits-inl.h"
 #include "shaders_cpp/lighting/brdf.h"
 #include "shaders_cpp/lighting/punctual_light.h"
 #include "shaders_cpp/lighting/scene_lighting.h"
@@ -49,7 +50,9 @@ HWY_INLINE VF at_most(VF a, VF bound) { return hn::IfThenElse(hn::Lt(bound, a), 
 // out[i] = schlick_power(x[i]) for i < count (at most 64); std::pow only where
 // schlick_power_is_exact fails and the lane's bit is set in `wanted` (other lanes' results are
 // never used).
-void power_lanes(const float* x, int count, uint64_t wanted, float* out) {
+// Inlined into ggx_terms, where it runs per light and vector of fragments: its constants are
+// then hoisted and no call is made.
+HWY_INLINE void power_lanes(const float* x, int count, uint64_t wanted, float* out) {
   const hn::ScalableTag<double> dd;
   const hn::Rebind<float, decltype(dd)> dh;  // half-width floats, one per double lane
   const hn::RebindToUnsigned<decltype(dd)> du;
@@ -132,10 +135,7 @@ HWY_INLINE void ggx_terms(DF df, const BrdfBatch& b, const SurfaceVec& s, const 
   if (!hn::AllFalse(df, wanted)) {
     alignas(64) float base[HWY_MAX_BYTES / sizeof(float)], raised[HWY_MAX_BYTES / sizeof(float)];
     hn::Store(hn::Sub(one, v_dot_h), df, base);
-    const DI di;
-    const uint64_t wanted_bits = hn::GetLane(hn::SumOfLanes(
-        di, hn::IfThenElseZero(hn::RebindMask(di, wanted), hn::LoadU(di, kLaneBit))));
-    power_lanes(base, static_cast<int>(hn::Lanes(df)), static_cast<uint32_t>(wanted_bits), raised);
+    power_lanes(base, static_cast<int>(hn::Lanes(df)), mask_bits(df, wanted), raised);
     power = hn::IfThenElseZero(wanted, hn::Load(df, raised));
   }
   for (int c = 0; c < 3; ++c) {
