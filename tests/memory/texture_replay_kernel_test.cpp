@@ -313,7 +313,7 @@ TEST(TextureReplayKernel, CopyTracesMissingInsideVectorsReplayAsThePlainLruOnEve
 }
 
 // `calls` with repeat entries (trace_repeats.h) put in at random points: the last W entries of
-// the call so far (1 to 40 of them, none a repeat entry) again R times (1 to 30). Windows of one
+// the call so far (1 to 40 of them, none a repeat entry) again R times (1 to 12). Windows of one
 // line per set (whose passes after the first all hit), of lines sharing sets or a region slot
 // (replayed pass by pass), of one entry (as the parallel replay's groups may hold).
 std::vector<std::vector<uint64_t>> with_repeats(const std::vector<std::vector<uint64_t>>& calls,
@@ -328,7 +328,7 @@ std::vector<std::vector<uint64_t>> with_repeats(const std::vector<std::vector<ui
       ++granules_since_repeat;
       if (rng() % 6 == 0) {
         const size_t window = 1 + rng() % std::min<size_t>(granules_since_repeat, 40);
-        out.push_back(trace_repeat(static_cast<uint32_t>(window), static_cast<uint32_t>(1 + rng() % 30)));
+        out.push_back(trace_repeat(static_cast<uint32_t>(window), static_cast<uint32_t>(1 + rng() % 12)));
         granules_since_repeat = 0;
       }
     }
