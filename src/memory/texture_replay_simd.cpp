@@ -356,23 +356,33 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
                               const uint64_t* granules, size_t count, uint64_t& extra_accesses);
 
 // Whether every granule of [granules, granules + count), taken with its slot's offset, is its
-// set's most recent way. A granule whose region is not its slot's never is (RegionTable).
+// set's most recent way (power-of-two sets). A granule whose region is not its slot's never is
+// (RegionTable). Whole vectors as RecentHits::Hit tests them, then the rest one by one.
 template <bool kPlain>
 HWY_INLINE bool AllMostRecent(const SetArray& sets, const RegionTable& regions,
                               const uint64_t* granules, size_t count) {
-  for (size_t k = 0; k < count; ++k) {
+  const D d;
+  const hn::RebindToSigned<D> di;
+  const size_t lanes = hn::Lanes(d);
+  const int line_shift = kPlain ? 0 : sets.line_shift;
+  const int index_shift = kPlain ? 0 : sets.line_shift + sets.index_shift;
+  const auto slot_mask = hn::Set(d, RegionTable::kSlots - 1);
+  const auto index_mask = hn::Set(d, sets.sets - 1);
+  size_t k = 0;
+  for (; k + lanes <= count; k += lanes) {
+    const auto granule = hn::LoadU(d, granules + k);
+    const auto slot = hn::And(hn::ShiftRight<kRegionShift>(granule), slot_mask);
+    const auto frame = hn::Add(granule, hn::GatherIndex(d, regions.offsets, hn::BitCast(di, slot)));
+    const auto line = hn::ShiftRightSame(frame, line_shift);
+    const auto index = hn::And(hn::ShiftRightSame(frame, index_shift), index_mask);
+    if (!hn::AllTrue(d, hn::Eq(hn::GatherIndex(d, sets.tags, hn::BitCast(di, index)), line))) return false;
+  }
+  for (; k < count; ++k) {
     const uint64_t granule = granules[k];
     const uint64_t frame =
         granule + regions.offsets[(granule >> kRegionShift) & (RegionTable::kSlots - 1)];
-    uint64_t line = frame;
-    uint32_t set;
-    if constexpr (kPlain) {
-      set = static_cast<uint32_t>(line & (sets.sets - 1));
-    } else {
-      line >>= sets.line_shift;
-      set = sets.index_of_line(line);
-    }
-    if (sets.tags[set] != line) return false;
+    const uint64_t line = frame >> line_shift;
+    if (sets.tags[(frame >> index_shift) & (sets.sets - 1)] != line) return false;
   }
   return true;
 }
