@@ -387,25 +387,35 @@ HWY_INLINE bool AllMostRecent(const SetArray& sets, const RegionTable& regions,
   return true;
 }
 
+// The passes of a repeat entry's window that ReplayRepeat's first test did not settle, replayed
+// one by one until a pass leaves every granule of the window its set's most recent way.
+template <bool kPlain, size_t kOlderWays>
+HWY_NOINLINE uint64_t ReplayRepeatPasses(const SetArray& sets, RegionTable& regions,
+                                         const uint64_t* window, uint32_t size, uint32_t repeats) {
+  uint64_t misses = 0;
+  for (uint32_t pass = 0; pass < repeats; ++pass) {
+    if (pass > 0 && AllMostRecent<kPlain>(sets, regions, window, size)) break;
+    uint64_t none = 0;  // a window holds no repeat entry
+    misses += ReplayPowerOfTwoSets<kPlain, kOlderWays>(sets, regions, window, size, none);
+  }
+  return misses;
+}
+
 // The repeat entry at `entry` (trace_repeats.h), its window just replayed before it: the window
 // again, as many times as the entry says. Once a pass over the window leaves every one of its
 // granules the most recent way of its set, another pass hits every time and changes nothing, so
 // the passes left are counted as hits without replaying them; until then (granules of the window
 // sharing a set) each pass is replayed. Adds the accesses the entry stands for, less the one its
-// entry was counted as, to `extra_accesses`; returns the misses.
+// entry was counted as, to `extra_accesses`; returns the misses. The usual case (the window's
+// granules in sets of their own) is one SIMD test, inline.
 template <bool kPlain, size_t kOlderWays>
-HWY_NOINLINE uint64_t ReplayRepeat(const SetArray& sets, RegionTable& regions,
-                                   const uint64_t* entry, uint64_t& extra_accesses) {
+HWY_INLINE uint64_t ReplayRepeat(const SetArray& sets, RegionTable& regions,
+                                 const uint64_t* entry, uint64_t& extra_accesses) {
   const uint32_t size = trace_repeat_window(*entry), repeats = trace_repeat_count(*entry);
   const uint64_t* const window = entry - size;
   extra_accesses += uint64_t{size} * repeats - 1;
-  uint64_t misses = 0;
-  for (uint32_t pass = 0; pass < repeats; ++pass) {
-    if (AllMostRecent<kPlain>(sets, regions, window, size)) break;
-    uint64_t none = 0;  // a window holds no repeat entry
-    misses += ReplayPowerOfTwoSets<kPlain, kOlderWays>(sets, regions, window, size, none);
-  }
-  return misses;
+  if (HWY_LIKELY(AllMostRecent<kPlain>(sets, regions, window, size))) return 0;
+  return ReplayRepeatPasses<kPlain, kOlderWays>(sets, regions, window, size, repeats);
 }
 
 // Granules [i, end) one at a time for the default 16-way cache with power-of-two sets: a hit in
@@ -477,13 +487,15 @@ uint64_t ReplayPowerOfTwoSets(const SetArray& sets, RegionTable& regions,
         if (i == end) break;
         // Leading stopped at a granule whose region is not in its slot (or, in a one-way
         // cache, that missed), or at a repeat entry (its "region" is never a slot's).
+        // A repeat entry is no break of the stream's hits: it does not count towards the
+        // scalar loop.
         if (is_trace_repeat(granules[i])) {
           misses += ReplayRepeat<kPlain, kOlderWays>(sets, regions, granules + i, extra_accesses);
         } else {
           misses += !AccessOne<kPlain, kOlderWays>(sets, regions, granules[i], true);
+          ++breaks;
         }
         ++i;
-        ++breaks;
       }
     }
     scalar = kOlderWays == 15 && breaks * kScalarBreakRatio > kBlock;  // the scalar loop is 16-way

@@ -61,25 +61,35 @@ inline std::vector<uint64_t> expand_trace_repeats(std::span<const uint64_t> trac
 
 // Folds chunks a producer appends into repeat entries: after appending a chunk of granules (one
 // quad's or one fragment's reads, consecutive repeats already dropped) at [chunk_begin, end), the
-// producer calls fold; a chunk equal to the one just before it (same size, >= 2 granules) becomes
-// a repeat entry, or adds one to the repeat entry after that chunk. Returns the trace's new end.
-// One folder per trace: reset() where the trace starts (a new tile) or is written by anything
-// else (entries appended without fold only break adjacency, which fold notices).
+// producer calls fold. Chunks equal to the one before them (same size, >= 2 granules, adjacent)
+// are copies of it; once the copies stand for at least `min_folded_accesses` accesses they become
+// one repeat entry, and later copies add one to it. Fewer copies stay plain: the replay takes a
+// repeat entry at about the cost of 20 most-recent-way hits (texture_replay_simd.cpp), so a short
+// run is cheaper replayed than folded. Returns the trace's new end.
+// One folder per trace: reset() where the trace starts (a new tile). Entries appended without
+// fold only break adjacency, which fold notices.
 class TraceRepeatFolder {
  public:
+  static constexpr size_t kDefaultMinFoldedAccesses = 24;
+  explicit TraceRepeatFolder(size_t min_folded_accesses = kDefaultMinFoldedAccesses)
+      : min_folded_accesses_(min_folded_accesses) {}
+
   void reset() { window_size_ = 0; }
 
   size_t fold(uint64_t* trace, size_t chunk_begin, size_t end) {
     const size_t size = end - chunk_begin;
     if (size >= 2 && size == window_size_) {
-      const size_t adjacent = window_begin_ + size + (repeated_ ? 1 : 0);
+      const size_t adjacent = window_begin_ + size * (1 + plain_copies_) + (repeated_ ? 1 : 0);
       if (chunk_begin == adjacent &&
           std::memcmp(trace + window_begin_, trace + chunk_begin, size * sizeof(uint64_t)) == 0) {
         uint64_t& repeat = trace[window_begin_ + size];
         if (!repeated_) {
-          repeat = trace_repeat(static_cast<uint32_t>(size), 1);
+          ++plain_copies_;
+          if (plain_copies_ * size < min_folded_accesses_) return end;
+          repeat = trace_repeat(static_cast<uint32_t>(size), static_cast<uint32_t>(plain_copies_));
           repeated_ = true;
-          return chunk_begin + 1;
+          plain_copies_ = 0;
+          return window_begin_ + size + 1;
         }
         if (trace_repeat_count(repeat) < kTraceRepeatMaxCount) {
           ++repeat;
@@ -89,6 +99,7 @@ class TraceRepeatFolder {
     }
     window_begin_ = chunk_begin;
     window_size_ = size;
+    plain_copies_ = 0;
     repeated_ = false;
     return end;
   }
@@ -98,9 +109,11 @@ class TraceRepeatFolder {
   }
 
  private:
+  size_t min_folded_accesses_;
   size_t window_begin_ = 0;
-  size_t window_size_ = 0;  // 0: no chunk to compare with
-  bool repeated_ = false;
+  size_t window_size_ = 0;   // 0: no chunk to compare with
+  size_t plain_copies_ = 0;  // copies of the window kept as plain entries after it
+  bool repeated_ = false;    // a repeat entry follows the window
 };
 
 }  // namespace ontile

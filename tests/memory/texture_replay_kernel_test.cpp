@@ -360,7 +360,7 @@ TEST(TraceRepeats, FolderMakesRepeatEntriesThatExpandToTheChunks) {
   const std::vector<std::vector<uint64_t>> chunks = {{1, 2}, {1, 2}, {1, 2}, {1, 2}, {1, 2},
                                                      {3, 4}, {3, 4}, {5},    {6, 7}, {6, 7}};
   std::vector<uint64_t> trace, plain;
-  TraceRepeatFolder folder;
+  TraceRepeatFolder folder(1);  // every copy folded
   for (const std::vector<uint64_t>& chunk : chunks) {
     const size_t begin = trace.size();
     trace.insert(trace.end(), chunk.begin(), chunk.end());
@@ -386,6 +386,31 @@ TEST(TraceRepeats, FolderMakesRepeatEntriesThatExpandToTheChunks) {
   folder.fold(trace, begin);
   EXPECT_EQ(trace.size(), expected.size() + 3);
   EXPECT_EQ(expand_trace_repeats(trace), plain);
+}
+
+TEST(TraceRepeats, FolderKeepsShortRunsPlain) {
+  // Chunks of 3: two copies (6 accesses) stay plain under a minimum of 8; the third copy (9)
+  // turns the copies into one repeat entry, and the fourth adds one to it.
+  TraceRepeatFolder folder(8);
+  std::vector<uint64_t> trace, plain;
+  for (int copy = 0; copy < 5; ++copy) {
+    const size_t begin = trace.size();
+    trace.insert(trace.end(), {4, 5, 6});
+    plain.insert(plain.end(), {4, 5, 6});
+    folder.fold(trace, begin);
+    if (copy == 2) EXPECT_EQ(trace, (std::vector<uint64_t>{4, 5, 6, 4, 5, 6, 4, 5, 6}));
+  }
+  EXPECT_EQ(trace, (std::vector<uint64_t>{4, 5, 6, trace_repeat(3, 4)}));
+  EXPECT_EQ(expand_trace_repeats(trace), plain);
+  // A different chunk after two plain copies starts a new window; nothing is folded.
+  TraceRepeatFolder other(8);
+  std::vector<uint64_t> short_run;
+  for (const std::vector<uint64_t>& chunk : {std::vector<uint64_t>{1, 2}, {1, 2}, {1, 2}, {3, 4}, {3, 4}}) {
+    const size_t begin = short_run.size();
+    short_run.insert(short_run.end(), chunk.begin(), chunk.end());
+    other.fold(short_run, begin);
+  }
+  EXPECT_EQ(short_run, (std::vector<uint64_t>{1, 2, 1, 2, 1, 2, 3, 4, 3, 4}));
 }
 
 }  // namespace
