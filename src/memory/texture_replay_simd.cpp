@@ -387,27 +387,32 @@ HWY_INLINE bool AllMostRecent(const SetArray& sets, const RegionTable& regions,
   return true;
 }
 
-// The passes of a repeat entry's window that ReplayRepeat's first test did not settle, replayed
-// one by one until a pass leaves every granule of the window its set's most recent way.
+// The passes of a repeat entry's window that ReplayRepeat's first test did not settle (granules
+// of the window sharing a set), replayed one by one until one of them misses nowhere: in an LRU
+// set, a pass over the window without a miss leaves the window's lines on top in the order of
+// their last access and the other lines below them in their order, so every later pass hits
+// again and leaves the same state (the window's lines are then all within the top ways).
 template <bool kPlain, size_t kOlderWays>
 HWY_NOINLINE uint64_t ReplayRepeatPasses(const SetArray& sets, RegionTable& regions,
                                          const uint64_t* window, uint32_t size, uint32_t repeats) {
   uint64_t misses = 0;
   for (uint32_t pass = 0; pass < repeats; ++pass) {
-    if (pass > 0 && AllMostRecent<kPlain>(sets, regions, window, size)) break;
     uint64_t none = 0;  // a window holds no repeat entry
-    misses += ReplayPowerOfTwoSets<kPlain, kOlderWays>(sets, regions, window, size, none);
+    const uint64_t pass_misses =
+        ReplayPowerOfTwoSets<kPlain, kOlderWays>(sets, regions, window, size, none);
+    misses += pass_misses;
+    if (pass_misses == 0) break;
   }
   return misses;
 }
 
 // The repeat entry at `entry` (trace_repeats.h), its window just replayed before it: the window
-// again, as many times as the entry says. Once a pass over the window leaves every one of its
-// granules the most recent way of its set, another pass hits every time and changes nothing, so
-// the passes left are counted as hits without replaying them; until then (granules of the window
-// sharing a set) each pass is replayed. Adds the accesses the entry stands for, less the one its
-// entry was counted as, to `extra_accesses`; returns the misses. The usual case (the window's
-// granules in sets of their own) is one SIMD test, inline.
+// again, as many times as the entry says. Where every granule of the window is its set's most
+// recent way, another pass hits every time and changes nothing, so the passes are counted as
+// hits without replaying them: one SIMD test, inline (the usual case, the window's granules in
+// sets of their own). Otherwise passes are replayed until one misses nowhere
+// (ReplayRepeatPasses). Adds the accesses the entry stands for, less the one its entry was
+// counted as, to `extra_accesses`; returns the misses.
 template <bool kPlain, size_t kOlderWays>
 HWY_INLINE uint64_t ReplayRepeat(const SetArray& sets, RegionTable& regions,
                                  const uint64_t* entry, uint64_t& extra_accesses) {
