@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <optional>
 
 #include "raster/cell_kernels.h"
@@ -119,6 +120,27 @@ void refresh_hiz(HierarchicalDepth& hiz, const TileCells& cells, int cell, const
   if (wrote && ctx.hiz_tracked) refresh_hiz(scratch.hiz, cells, cell, rect, memory);
 }
 
+// cell_depth_bounds' min_out (lower) or max_out alone, by the same operations: hierarchical Z's
+// test reads only one of them (the incoming minimum for Less and LessEqual, the maximum for
+// Greater and GreaterEqual, the only compares it decides).
+inline double cell_depth_bound(const CellPlane& z, int cell_x0, int cell_y0, int x0, int y0, int x1,
+                               int y1, bool lower) {
+  const double fx_lo = x0 - cell_x0 - 0.5, fx_hi = x1 - cell_x0 - 0.5;
+  const double fy_lo = y0 - cell_y0 - 0.5, fy_hi = y1 - cell_y0 - 0.5;
+  const double magnitude = std::abs(static_cast<double>(z.origin)) +
+                           std::abs(static_cast<double>(z.dx)) * kCellSizePx +
+                           std::abs(static_cast<double>(z.dy)) * kCellSizePx;
+  const double margin = magnitude * 8.0 * 0x1p-24 + 0x1p-126;
+  if (lower) {
+    const double zx_lo = std::min(z.dx * fx_lo, z.dx * fx_hi);
+    const double zy_lo = std::min(z.dy * fy_lo, z.dy * fy_hi);
+    return z.origin + zx_lo + zy_lo - margin;
+  }
+  const double zx_hi = std::max(z.dx * fx_lo, z.dx * fx_hi);
+  const double zy_hi = std::max(z.dy * fy_lo, z.dy * fy_hi);
+  return z.origin + zx_hi + zy_hi + margin;
+}
+
 // What rasterize_cells calls per cell, looked up once per tile: the cell kernels of the SIMD
 // target in use and sample 0's offset from the pixel centre (the depth kernel's input).
 struct CellCalls {
@@ -166,6 +188,7 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, const C
   const bool depth_test = ctx.depth_test;
   const CompareOp op = ctx.draw.raster.depth_compare;
   const bool hiz_enabled = ctx.hiz_enabled;
+  const bool hiz_lower = op == CompareOp::Less || op == CompareOp::LessEqual;
   const int rect_y_end = rect.y0 + rect.height;
   for (int cj = cj0; cj <= cj1; ++cj) {
     for (int ci = ci0; ci <= ci1; ++ci) {
@@ -190,10 +213,11 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, const C
       ++counters.cells_rasterized;
       planes.at_cell(cx, cy, st.planes);
       if (hiz_enabled) {
-        double lo, hi;
-        cell_depth_bounds(st.planes[2], cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
-                          std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), lo, hi);
-        if (scratch.hiz.rejects(cell, op, ctx.quantize_depth(lo), ctx.quantize_depth(hi))) {
+        // The one bound the test reads, for both of its arguments.
+        const float bound = ctx.quantize_depth(cell_depth_bound(
+            st.planes[2], cx, cy, std::max(cx, rect.x0), std::max(cy, rect.y0),
+            std::min(cx + kCellSizePx, x_end), std::min(cy + kCellSizePx, y_end), hiz_lower));
+        if (scratch.hiz.rejects(cell, op, bound, bound)) {
           ++counters.cells_hiz_rejected;
           for (int s = 0; s < samples; ++s) st.passing[s] = 0;
           if (!ctx.fragments) {  // nothing to record: count the cell's pixels and skip its quads
