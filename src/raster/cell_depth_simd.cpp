@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "raster/cell_pixel_coords.h"
+#include "raster/cell_kernels.h"
 #include "raster/cell_raster.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -213,17 +214,16 @@ HWY_EXPORT(DepthTestKernel);
 HWY_EXPORT(DepthRangeKernel);
 HWY_EXPORT(CellDepthTestKernel);
 
-namespace {
-// A sample offset in 1/256 px from the pixel's top-left corner, from the pixel centre in px.
-float centre_offset(int32_t s) {
+float sample_centre_offset(int32_t s) {
   return static_cast<float>(s - kSubpixelScale / 2) / static_cast<float>(kSubpixelScale);
 }
-}  // namespace
+
+CellDepthTestKernelFn cell_depth_test_kernel() { return &HWY_DYNAMIC_DISPATCH(CellDepthTestKernel); }
 
 void interpolate_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy, float out[kCellPixels],
                             int first_row, int end_row) {
-  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, centre_offset(sx),
-                                        centre_offset(sy), first_row, end_row, out);
+  HWY_DYNAMIC_DISPATCH(CellDepthKernel)(depth.origin, depth.dx, depth.dy, sample_centre_offset(sx),
+                                        sample_centre_offset(sy), first_row, end_row, out);
 }
 
 CellMask interpolate_and_test_cell_depth(const CellPlane& depth, int32_t sx, int32_t sy,
@@ -231,7 +231,7 @@ CellMask interpolate_and_test_cell_depth(const CellPlane& depth, int32_t sx, int
                                          CompareOp op, bool test, bool write, float* stored,
                                          int stride, int rows, CellMask candidates,
                                          float* range_lo, float* range_hi) {
-  return HWY_DYNAMIC_DISPATCH(CellDepthTestKernel)(depth, centre_offset(sx), centre_offset(sy),
+  return HWY_DYNAMIC_DISPATCH(CellDepthTestKernel)(depth, sample_centre_offset(sx), sample_centre_offset(sy),
                                                    first_row, end_row, z, op, test, write, stored,
                                                    stride, rows, candidates, range_lo, range_hi);
 }

@@ -14,6 +14,7 @@
 
 #include "raster/cell_pixel_coords.h"
 #include "raster/cell_raster.h"
+#include "raster/cell_kernels.h"
 #include "util/error.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -150,6 +151,10 @@ CellEdges::CellEdges(const TriangleSetup& t) : setup(&t) {
     b_step[k] = int32_ok[k] ? static_cast<int32_t>(e.b * kSubpixelScale) : 0;
   }
 }
+
+// The dispatch table's entry for the chosen target (before the first dispatch, the entry that
+// chooses and then calls it: valid too).
+CoverageLanesKernel coverage_lanes_kernel() { return &HWY_DYNAMIC_DISPATCH(CoverageKernel); }
 
 bool cells_trivially_accepted(const TriangleSetup& t, int first_x, int first_y, int last_x, int last_y) {
   const int64_t px0 = int64_t{first_x} * kSubpixelScale, py0 = int64_t{first_y} * kSubpixelScale;

@@ -11,6 +11,7 @@
 
 #include "raster/cell_raster.h"
 #include "raster/rasterize.h"
+#include "raster/small_cell_coverage.h"
 
 namespace ontile {
 namespace {
@@ -259,6 +260,64 @@ TEST(CellRaster, InterpolationErrorStaysWithinTheDocumentedBound) {
   EXPECT_LE(worst_varying_rel, 0x1p-18);
   RecordProperty("worst_depth_ulps", std::to_string(worst_depth_ulps));
   RecordProperty("worst_varying_rel", std::to_string(worst_varying_rel));
+}
+
+// SmallCellCoverage (the tile loop's one-sample coverage of small triangles, with per-edge
+// trivial tests) against cell_coverage, on every SIMD target: every cell of the target with
+// random valid masks (whole cells, rectangles, single rows), triangles from sub-pixel to the
+// size limit, both the standard centre sample and off-centre positions.
+TEST(CellRaster, SmallCellCoverageEqualsCellCoverageOnEveryTarget) {
+  struct RestoreTarget {
+    ~RestoreTarget() { force_simd_target(""); }
+  } restore;
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> centre_x(-20.0, kWidth + 20.0), centre_y(-20.0, kHeight + 20.0);
+  std::uniform_real_distribution<double> w(0.5, 3.0);
+  SamplePattern off_centre = *standard_sample_pattern(1);
+  int small = 0, compared = 0, empty_in_box = 0, partial = 0;
+  for (const std::string& target : simd_targets()) {
+    force_simd_target(target);
+    for (int i = 0; i < 400; ++i) {
+      const double extent = i % 4 == 0 ? 1.5 : i % 4 == 1 ? 6.0 : i % 4 == 2 ? 20.0 : 90.0;
+      std::uniform_real_distribution<double> offset(-extent, extent);
+      const double x = centre_x(rng), y = centre_y(rng);
+      glm::vec4 clip[3];
+      for (auto& c : clip) c = clip_of_pixel(x + offset(rng), y + offset(rng), w(rng));
+      TriangleSetup t;
+      if (setup_triangle(clip, kWidth, kHeight, CullMode::None, FrontFace::CounterClockwise, t) != SetupResult::Ok) continue;
+      const CellEdges edges(t);
+      if (!edges.small) continue;
+      ++small;
+      off_centre.x[0] = static_cast<int32_t>(rng() % kSubpixelScale);
+      off_centre.y[0] = static_cast<int32_t>(rng() % kSubpixelScale);
+      for (const SamplePattern* p : {standard_sample_pattern(1), static_cast<const SamplePattern*>(&off_centre)}) {
+        const SmallCellCoverage coverage(edges, p->x[0], p->y[0], true, coverage_lanes_kernel());
+        for (int cy = 0; cy < kHeight; cy += kCellSizePx) {
+          for (int cx = 0; cx < kWidth; cx += kCellSizePx) {
+            const int kind = static_cast<int>(rng() % 3);
+            const int x0 = cx + static_cast<int>(rng() % 8), y0 = cy + static_cast<int>(rng() % 8);
+            const CellMask valid =
+                kind == 0 ? cell_rect_mask(cx, cy, 0, 0, kWidth, kHeight)
+                : kind == 1 ? cell_rect_mask(cx, cy, x0, y0, x0 + 1 + static_cast<int>(rng() % 8), y0 + 1 + static_cast<int>(rng() % 8))
+                            : cell_rect_mask(cx, cy, 0, y0, kWidth, y0 + 1);
+            CellMask expected[kMaxSamples];
+            const CellMask any = cell_coverage(edges, *p, cx, cy, valid, expected);
+            ASSERT_EQ(coverage(cx, cy, valid), any) << target << " triangle " << i << " cell " << cx << "," << cy;
+            ASSERT_EQ(coverage.untested(cx, cy, valid), any) << target << " triangle " << i << " cell " << cx << "," << cy;
+            ASSERT_EQ(any, expected[0]);
+            const bool in_box = cx >= edges.small_x0 && cx < edges.small_x1 && cy >= edges.small_y0 && cy < edges.small_y1;
+            if (in_box && valid && !any) ++empty_in_box;
+            if (any && any != valid) ++partial;
+            ++compared;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(small, 400);
+  EXPECT_GT(compared, 100000);
+  EXPECT_GT(empty_in_box, 100);  // cells the trivial reject decides
+  EXPECT_GT(partial, 100);       // cells the kernel decides
 }
 
 // Hierarchical Z's per-cell bounds: depth_range against the scalar definition, on every SIMD
