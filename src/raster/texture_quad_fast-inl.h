@@ -213,14 +213,16 @@ HWY_INLINE void stage_footprints(const FastLevelPair& pair, const int32_t relati
   staging.last = sequence[count - 1];
 }
 
-// Whether every coordinate of `count` lanes at u, v is below 2^23 texels of level 0 (width, height
-// as floats): then so is every level's texel coordinate u * size - 0.5 (sizes only shrink), well
-// inside the 2^24 that sample_fast checks per quad, so a block of quads checks once.
-HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, float width, float height) {
+// Whether every coordinate of `count` lanes at u, v is below 2^23 texels of level 0: limit_u,
+// limit_v are kTameLimit / width and / height of level 0 (as floats). Then so is every level's
+// texel coordinate u * size - 0.5 (sizes only shrink), well inside the 2^24 that sample_fast
+// checks per quad, so a block of quads checks once.
+constexpr float kTameLimit = 8388608.0f;
+HWY_INLINE bool coordinates_tame(const float* u, const float* v, size_t count, float limit_u, float limit_v) {
   const hn::CappedTag<float, 4 * kLanes> d;
-  const auto limit_u = hn::Set(d, 8388608.0f / width), limit_v = hn::Set(d, 8388608.0f / height);
+  const auto limits_u = hn::Set(d, limit_u), limits_v = hn::Set(d, limit_v);
   const auto in_limits = [&](size_t i) {
-    return hn::And(hn::Lt(hn::Abs(hn::Load(d, u + i)), limit_u), hn::Lt(hn::Abs(hn::Load(d, v + i)), limit_v));
+    return hn::And(hn::Lt(hn::Abs(hn::Load(d, u + i)), limits_u), hn::Lt(hn::Abs(hn::Load(d, v + i)), limits_v));
   };
   auto tame = in_limits(0);
   for (size_t i = hn::Lanes(d); i < count; i += hn::Lanes(d)) tame = hn::And(tame, in_limits(i));

@@ -55,8 +55,8 @@ HWY_INLINE hn::Vec<D> filter_channel(D d, const float* table, const hn::Vec<hn::
 // The quad's 4 channels from its pairs' texels packed[t][pair] and weights a, b: filtered per
 // level, level 1 blended in with weight in.blend (two levels), channel c of lane i to
 // out[c][offset + i].
-// Where one vector holds every pair (8 lanes), a channel stays in registers from the decode to
-// the store, one channel at a time; elsewhere the filter runs on the pairs a vector at a time.
+// Where one vector holds every pair (8 lanes), channels stay in registers from the decode to
+// the store, two channels at a time; elsewhere the filter runs on the pairs a vector at a time.
 template <int kLevels, class D>
 HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int32_t packed[4][kPairs],
                             const float* a, const float* b, float* const out[4], size_t offset) {
@@ -69,17 +69,26 @@ HWY_INLINE void filter_quad(D d8, const QuadSample8& in, size_t pairs, const int
     const auto wa = hn::Load(d8, a), wb = hn::Load(d8, b);
     const auto one_a = hn::Sub(one8, wa), one_b = hn::Sub(one8, wb);
     const hn::Half<D> dh;
-    const auto w = hn::Set(dh, in.blend);
-    const auto one_w = hn::Sub(hn::Set(dh, 1.0f), w);
-    const auto store = [&](hn::Vec<D> filtered, float* row) {
-      auto value = hn::LowerHalf(dh, filtered);
-      if (kLevels == 2) value = hn::Add(hn::Mul(value, one_w), hn::Mul(hn::UpperHalf(dh, filtered), w));
-      hn::StoreU(value, dh, row + offset);
+    const auto w = hn::Set(d8, in.blend);
+    const auto one_w = hn::Sub(one8, w);
+    // Two channels at a time: with two levels, both channels' level d lanes on one vector and
+    // their level d + 1 lanes on another, so one blend serves both (v (1 - w) + v' w per lane).
+    const auto store = [&](hn::Vec<D> filtered0, hn::Vec<D> filtered1, float* row0, float* row1) {
+      if (kLevels == 2) {
+        const auto level0 = hn::ConcatLowerLower(d8, filtered1, filtered0);
+        const auto level1 = hn::ConcatUpperUpper(d8, filtered1, filtered0);
+        const auto value = hn::Add(hn::Mul(level0, one_w), hn::Mul(level1, w));
+        hn::StoreU(hn::LowerHalf(dh, value), dh, row0 + offset);
+        hn::StoreU(hn::UpperHalf(dh, value), dh, row1 + offset);
+      } else {
+        hn::StoreU(hn::LowerHalf(dh, filtered0), dh, row0 + offset);
+        hn::StoreU(hn::LowerHalf(dh, filtered1), dh, row1 + offset);
+      }
     };
-    store(filter_channel<0>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[0]);
-    store(filter_channel<8>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[1]);
-    store(filter_channel<16>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[2]);
-    store(filter_channel<24>(d8, in.alpha_decode, p, wa, one_a, wb, one_b), out[3]);
+    store(filter_channel<0>(d8, in.rgb_decode, p, wa, one_a, wb, one_b),
+          filter_channel<8>(d8, in.rgb_decode, p, wa, one_a, wb, one_b), out[0], out[1]);
+    store(filter_channel<16>(d8, in.rgb_decode, p, wa, one_a, wb, one_b),
+          filter_channel<24>(d8, in.alpha_decode, p, wa, one_a, wb, one_b), out[2], out[3]);
     return;
   }
 #endif

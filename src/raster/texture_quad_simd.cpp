@@ -101,6 +101,76 @@ bool SampleQuad8Kernel(const QuadSample8& in, glm::vec4* out) {
   return true;
 }
 
+// What the batch driver keeps per read. Each thread keeps kMaxReads of them from one batch call to
+// the next (thread_read_states): a shader's consecutive batches mostly read the same textures, and
+// a call (about 14 quads in the atrium frame) prepared its level pairs anew, about 120
+// instructions each, more than a quad's driver work.
+struct ReadState {
+  const BatchRead8* source = nullptr;  // the batch call's read
+  QuadSample8 job;
+  // The level pair of the read's last trilinear job and the level of its last single-level
+  // job, prepared for sample_fast.
+  FastLevelPair fast_pair, fast_single;
+  // Of the levels facts_level and the one after it (when there is one).
+  LevelFacts facts;
+  const Texture2D::Level* facts_level = nullptr;
+  // What the prepared pairs and facts depend on: the read's texture (its levels, told apart from
+  // a later texture at the same place by the first level's address, unique to a texture for the
+  // process's life), its level count and its wraps. Level 0's size as floats, for the LOD and
+  // coordinates_tame.
+  const Texture2D::Level* levels = nullptr;
+  uint64_t address = 0;
+  float max_level = 0.0f;
+  WrapMode wrap_u = WrapMode::Repeat, wrap_v = WrapMode::Repeat;
+  float width = 0.0f, height = 0.0f;
+  float limit_u = 0.0f, limit_v = 0.0f;  // coordinates_tame's limits
+  // The block's quads (kLanes of them): lambda, level d, weight of level d + 1 (see
+  // sample_quad_batch).
+  alignas(16) float lambda[kLanes];
+  alignas(16) int32_t level[kLanes];
+  alignas(16) float blend[kLanes];
+  bool tame = false;  // coordinates_tame of the block
+
+  // Takes the batch call's read: keeps what it prepared for the same texture and wraps. Not
+  // inlined: the loop over reads around it was vectorised with alias checks (about 380
+  // instructions a call).
+  HWY_NOINLINE void take(const BatchRead8& read, const QuadBatch8& batch) {
+    source = &read;
+    job.wrap_u = read.wrap_u;
+    job.wrap_v = read.wrap_v;
+    job.rgb_decode = read.rgb_decode;
+    job.alpha_decode = read.alpha_decode;
+    job.trace = batch.trace;
+    job.last_granule = batch.last_granule;
+    job.trace_repeats = read.trace_repeats;
+    if (levels == read.levels && address == read.levels[0].address && max_level == read.max_level &&
+        wrap_u == read.wrap_u && wrap_v == read.wrap_v) {
+      return;
+    }
+    levels = read.levels;
+    address = read.levels[0].address;
+    max_level = read.max_level;
+    wrap_u = read.wrap_u;
+    wrap_v = read.wrap_v;
+    fast_pair.first = nullptr;
+    fast_single.first = nullptr;
+    facts_level = nullptr;
+    width = static_cast<float>(read.levels[0].width);
+    height = static_cast<float>(read.levels[0].height);
+    limit_u = kTameLimit / width;
+    limit_v = kTameLimit / height;
+  }
+};
+
+// The calling thread's read states (constant-initialised, so no guard on access). A batch call
+// runs no other batch call on its thread (after_quad hooks only trace), so one set serves. Not
+// inlined: inlined, the thread-local address was computed again in the block loop, a call to
+// the TLS resolver with the vector registers saved around it.
+HWY_NOINLINE ReadState* thread_read_states() {
+  static thread_local constinit ReadState states[QuadBatch8::kMaxReads];
+  return states;
+}
+
 // Texture2D::sample_quads' jobs (quad q, read r) from position `first` = q * read_count + r on,
 // in that order (texture.cpp's quad_lambda and linear8_job, operation for operation); returns
 // the position of the first job that needs the general path, or quad_count * read_count.
@@ -110,37 +180,8 @@ template <bool kAfterQuad>
 int sample_quad_batch(const QuadBatch8& batch, int first) {
   const hn::CappedTag<float, kLanes> d;
   constexpr int kBlockQuads = kLanes;
-  // What the driver keeps per read, in one place so that the per-quad loop steps one pointer
-  // per read (separate arrays per field cost a spilled induction pointer each).
-  struct ReadState {
-    QuadSample8 job;
-    // The level pair of the read's last trilinear job and the level of its last single-level
-    // job, prepared for sample_fast.
-    FastLevelPair fast_pair, fast_single;
-    // Of the levels facts_level and the one after it (when there is one).
-    LevelFacts facts;
-    const Texture2D::Level* facts_level = nullptr;
-    // The block's quads: lambda, level d, weight of level d + 1 (see below).
-    alignas(16) float lambda[kBlockQuads];
-    alignas(16) int32_t level[kBlockQuads];
-    alignas(16) float blend[kBlockQuads];
-    bool tame = false;  // coordinates_tame of the block
-  };
-  // Only the batch's reads are constructed (a batch call is short: about 14 quads in the atrium
-  // frame, and initialising all kMaxReads states cost more than a quad's driver work).
-  alignas(ReadState) unsigned char state_storage[sizeof(ReadState) * QuadBatch8::kMaxReads];
-  ReadState* const states = reinterpret_cast<ReadState*>(state_storage);
-  for (int r = 0; r < batch.read_count; ++r) {
-    const BatchRead8& read = batch.reads[r];
-    QuadSample8& job = (new (&states[r]) ReadState)->job;
-    job.wrap_u = read.wrap_u;
-    job.wrap_v = read.wrap_v;
-    job.rgb_decode = read.rgb_decode;
-    job.alpha_decode = read.alpha_decode;
-    job.trace = batch.trace;
-    job.last_granule = batch.last_granule;
-    job.trace_repeats = read.trace_repeats;
-  }
+  ReadState* const states = thread_read_states();
+  for (int r = 0; r < batch.read_count; ++r) states[r].take(batch.reads[r], batch);
   TraceStaging staging;
   if (batch.trace) staging.last = *batch.last_granule;
   // Before returning, the staged granules go to the trace (the general path appends after them).
@@ -151,8 +192,9 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
     }
     return position;
   };
-  const int first_quad = first / batch.read_count;
-  int first_read = first - first_quad * batch.read_count;
+  const int read_count = batch.read_count;
+  const int first_quad = first / read_count;
+  int first_read = first - first_quad * read_count;
   // Quads a block of 4 at a time: the block's coordinates made finite (finite_or_zero on lanes:
   // |x| < inf is false for NaN and infinities), then quad_lambda's rho = max(|d(uv)/dx|,
   // |d(uv)/dy|) in texels of level 0 (OpenGL 4.6 eq. 8.7) for each read, one quad per lane: the
@@ -184,9 +226,9 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       hn::LoadInterleaved4(d, block_v + i * kLanes, v0, v1, v2, v3);
       const auto du_dx = hn::Sub(u1, u0), dv_dx = hn::Sub(v1, v0);
       const auto du_dy = hn::Sub(u2, u0), dv_dy = hn::Sub(v2, v0);
-      for (int r = 0; r < batch.read_count; ++r) {
-        const auto width = hn::Set(d, static_cast<float>(batch.reads[r].levels[0].width));
-        const auto height = hn::Set(d, static_cast<float>(batch.reads[r].levels[0].height));
+      for (int r = 0; r < read_count; ++r) {
+        const auto width = hn::Set(d, states[r].width);
+        const auto height = hn::Set(d, states[r].height);
         const auto dx_u = hn::Mul(du_dx, width), dx_v = hn::Mul(dv_dx, height);
         const auto dy_u = hn::Mul(du_dy, width), dy_v = hn::Mul(dv_dy, height);
         const auto rho_x = hn::Sqrt(hn::Add(hn::Mul(dx_u, dx_u), hn::Mul(dx_v, dx_v)));
@@ -198,16 +240,14 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
     // normal positive float. Quads past the batch's end take rho 1. Then linear8_job's level
     // selection on lanes for Linear and None mipmaps: level d and the weight of level d + 1
     // (0: level d alone); Nearest selects per quad below.
-    for (int r = 0; r < batch.read_count; ++r) {
+    for (int r = 0; r < read_count; ++r) {
       const BatchRead8& read = batch.reads[r];
       ReadState& state = states[r];
       for (int j = quads; j < kBlockQuads; ++j) rho[r][j] = 1.0f;
       if (!log2_exact_lanes(rho[r], read.lod_bias, state.lambda)) {
         for (int j = 0; j < kBlockQuads; ++j) state.lambda[j] = log2_exact(rho[r][j]) + read.lod_bias;
       }
-      const Texture2D::Level& base = read.levels[0];
-      state.tame = coordinates_tame(block_u, block_v, kBlockQuads * kLanes, static_cast<float>(base.width),
-                                    static_cast<float>(base.height));
+      state.tame = coordinates_tame(block_u, block_v, kBlockQuads * kLanes, state.limit_u, state.limit_v);
       if (read.mipmap_mode == MipmapMode::Nearest) continue;
       const hn::RebindToSigned<decltype(d)> di;
       for (size_t i = 0; i < static_cast<size_t>(kBlockQuads); i += hn::Lanes(d)) {
@@ -226,17 +266,19 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
       const int f0 = q * kLanes;
       const float* quad_u = block_u + j * kLanes;  // the quad's 4 finite coordinates
       const float* quad_v = block_v + j * kLanes;
-      for (int r = first_read; r < batch.read_count; ++r) {
-        const BatchRead8& read = batch.reads[r];
+      for (int r = first_read; r < read_count; ++r) {
         ReadState& state = states[r];
+        const BatchRead8& read = *state.source;
         QuadSample8& job = state.job;
+        bool trilinear = false;
         if (read.mipmap_mode != MipmapMode::Nearest) {
           const int level = state.level[j];
           const float blend = state.blend[j];
+          trilinear = blend != 0.0f;
           job.levels[0] = &read.levels[level];
           job.level_count = 1;
           job.blend = 0.0f;
-          if (blend != 0.0f) {
+          if (trilinear) {
             job.levels[1] = &read.levels[level + 1];
             job.level_count = 2;
             job.blend = blend;
@@ -256,10 +298,10 @@ int sample_quad_batch(const QuadBatch8& batch, int first) {
         }
         // The common case on its fast path: level pairs for trilinear jobs, single levels for the
         // rest, each prepared when a read's job moves to another level.
-        FastLevelPair& prepared = job.level_count == 2 ? state.fast_pair : state.fast_single;
+        FastLevelPair& prepared = trilinear ? state.fast_pair : state.fast_single;
         if (prepared.first != job.levels[0]) {
           const int levels_after = static_cast<int>(read.max_level) - static_cast<int>(job.levels[0] - read.levels);
-          if (job.level_count == 2) {
+          if (trilinear) {
             prepared.prepare<2>(job.levels[0], levels_after, read.wrap_u, read.wrap_v);
           } else {
             prepared.prepare<1>(job.levels[0], levels_after, read.wrap_u, read.wrap_v);

@@ -152,6 +152,59 @@ TEST(TextureQuads, BatchesMatchSampleQuadBitsAndTrace) {
   EXPECT_GT(checked, 600 * 8);
 }
 
+// The batch driver keeps each thread's prepared levels from one call to the next: a texture
+// made where a destroyed one was (its levels likely at the same place, same level count, other
+// sizes) must be sampled with its own levels, and so must the same texture with other wraps.
+TEST(TextureQuads, BatchesAfterAnotherTextureAtTheSamePlaceUseTheirOwnLevels) {
+  std::mt19937 rng(515);
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  for (int round = 0; round < 60; ++round) {
+    force_simd_target(targets[(round / 3) % targets.size()]);
+    const bool wide = round % 2 == 0;
+    const auto texture = Texture2D::from_rgba8(wide ? 64 : 16, wide ? 16 : 64, random_bytes(rng, 64, 16),
+                                               round % 3 == 0, "reused");
+    SamplerDesc sampler;
+    sampler.wrap_v = round % 4 == 3 ? WrapMode::ClampToEdge : WrapMode::Repeat;
+    const float scale = std::exp2(std::uniform_real_distribution<float>(-7.0f, -1.0f)(rng));
+    float u[kFragments], v[kFragments];
+    for (int q = 0; q < kQuads; ++q) {
+      const float u0 = std::uniform_real_distribution<float>(-1.0f, 2.0f)(rng);
+      const float v0 = std::uniform_real_distribution<float>(-1.0f, 2.0f)(rng);
+      for (int lane = 0; lane < 4; ++lane) {
+        u[q * 4 + lane] = u0 + scale * static_cast<float>(lane & 1);
+        v[q * 4 + lane] = v0 + scale * static_cast<float>(lane >> 1) * 0.75f;
+      }
+    }
+    std::vector<uint64_t> expected_trace, trace;
+    float expected[4][kFragments], out[4][kFragments];
+    {
+      const TexelTraceScope scope(&expected_trace);
+      for (int q = 0; q < kQuads; ++q) {
+        const glm::vec2 uv[4] = {{u[q * 4], v[q * 4]}, {u[q * 4 + 1], v[q * 4 + 1]},
+                                 {u[q * 4 + 2], v[q * 4 + 2]}, {u[q * 4 + 3], v[q * 4 + 3]}};
+        glm::vec4 texel[4];
+        texture->sample_quad(sampler, uv, texel);
+        for (int lane = 0; lane < 4; ++lane) {
+          for (int c = 0; c < 4; ++c) expected[c][q * 4 + lane] = texel[lane][c];
+        }
+      }
+    }
+    {
+      const Texture2D::QuadRead read{texture.get(), &sampler, {out[0], out[1], out[2], out[3]}};
+      const TexelTraceScope scope(&trace);
+      Texture2D::sample_quads(&read, 1, u, v, kQuads);
+    }
+    ASSERT_EQ(trace, expected_trace) << "round " << round;
+    for (int c = 0; c < 4; ++c) {
+      for (int f = 0; f < kFragments; ++f) {
+        ASSERT_EQ(std::bit_cast<uint32_t>(out[c][f]), std::bit_cast<uint32_t>(expected[c][f]))
+            << "round " << round << " fragment " << f << " channel " << c;
+      }
+    }
+  }
+}
+
 // Without a trace scope nothing is recorded and the values are the same.
 TEST(TextureQuads, UntracedBatchesGiveTheSameValues) {
   std::mt19937 rng(77);
