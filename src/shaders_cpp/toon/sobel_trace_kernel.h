@@ -51,6 +51,16 @@ inline constexpr uint32_t kReadPatternSlots[kReadPatterns] = {
 // template kernel and the pattern gathers may write up to this many entries past the last read.
 constexpr int kTraceSlack = 8;
 
+// A repeat entry of a texture trace, "the `window` entries before me, `repeats` more times",
+// in the format of memory/trace_repeats.h (which the shaders layer cannot include; its rules:
+// window >= 2 granules right before the entry, in the same tile's trace, no repeat entry among
+// them). tests/shaders/sobel_trace_kernel_test.cpp checks that the two agree.
+constexpr uint64_t kRepeatEntryBit = uint64_t{1} << 63;
+constexpr uint64_t repeat_entry(uint32_t window, uint32_t repeats) {
+  return kRepeatEntryBit | uint64_t{window} << 32 | repeats;
+}
+constexpr bool is_repeat_entry(uint64_t entry) { return (entry & kRepeatEntryBit) != 0; }
+
 // Read classes of the template kernel (trace_batch_template): bit 0, the left tap column lies
 // in the granule before the centre's; bit 1, the right one in the granule after; bit 2, a depth
 // edge (no normal taps besides the centre).
@@ -90,13 +100,20 @@ struct TraceTemplates {
   // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
   // granule and has no edge reads its quads' pairs in the classes of such a row: the left
   // column of its first pixel and the right column of its last in the neighbouring granules.
-  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset.
+  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset,
+  // a quad equal to the one before it folded into a repeat entry (the middle quads read the
+  // same granules: one repeat entry for all but the first); row_repeat_at: where the repeat
+  // entries lie, written over the vector stores' sums; row_last: the row's last granule.
   bool rows = false;
   static constexpr int kRowQuads = 8;
   static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
   uint32_t row_keys[kRowQuads] = {};
   alignas(64) uint64_t row_reads[kRowReads] = {};
   int row_count = 0;
+  int row_repeats = 0;
+  int row_repeat_at[kRowQuads] = {};
+  uint64_t row_repeat[kRowQuads] = {};
+  int row_last = 0;
 };
 
 // The planes a batch reads. Depth, normal and border share the depth grid's size.
@@ -131,8 +148,11 @@ struct BatchTracePlanes {
 // taps row by row, the normal centre (with a normal plane), the other 8 normal taps where
 // depth found no edge, the colour at (color_x, color_y), the border at the nearest tap where
 // there is an edge (with a border plane), each skipped when equal to the granule before it
-// (`last_granule` before the first; updated). Returns how many granules it wrote to
-// `granules` (room for count * kTraceSlots + kTraceSlack).
+// (`last_granule` before the first; updated). Returns how many entries it wrote to
+// `granules` (room for count * kTraceSlots + kTraceSlack): granules and, from the template
+// kernels, repeat entries (repeat_entry) whose windows lie in what this call wrote, so
+// expand_trace_repeats of the entries gives those granules; last_granule is the last granule
+// of that expansion.
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule);
@@ -144,7 +164,8 @@ int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
 int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
                    const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                    uint64_t& last_granule);
-// The same granules from the class templates (TraceTemplates) for batches whose active
+// The same granules (some folded into repeat entries, repeat_entry) from the class templates
+// (TraceTemplates) for batches whose active
 // fragments all fit them (tap rows y - 1, y, y + 1, tap columns within a granule of the
 // centre's) and whose first read is new; returns -1, writing nothing of use and leaving
 // last_granule, for any other batch or planes without usable templates.

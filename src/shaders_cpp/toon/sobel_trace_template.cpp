@@ -10,6 +10,7 @@
 
 #include "raster/lane_bits-inl.h"
 
+#include <algorithm>
 #include <bit>
 
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
@@ -24,6 +25,27 @@ using ontile::HWY_NAMESPACE::mask_bits;
 using DU = hn::ScalableTag<uint32_t>;
 using VU = hn::Vec<DU>;
 using DW = hn::ScalableTag<uint64_t>;
+
+// The last granule of a trace that ends at `end`: a repeat entry's window (right before it)
+// ends with the granule its expansion ends with.
+HWY_INLINE uint64_t last_granule_before(const uint64_t* end) {
+  return is_repeat_entry(end[-1]) ? end[-2] : end[-1];
+}
+
+// TraceTemplates::row_reads plus offset at out, its repeat entries as they are (the vectors
+// write up to 7 entries past the row).
+HWY_INLINE void write_row(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
+  const DW dw;
+  const size_t wide = hn::Lanes(dw);
+  const auto add = hn::Set(dw, offset);
+  // Blocks of 8 (row_reads is padded to them), a fixed number of vectors each.
+  for (int at = 0; at < t.row_count; at += 8) {
+    for (size_t i = 0; i < 8; i += wide) {
+      hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
+    }
+  }
+  for (int r = 0; r < t.row_repeats; ++r) out[t.row_repeat_at[r]] = t.row_repeat[r];
+}
 
 HWY_INLINE hn::Mask<DU> lanes_of(DU du, uint64_t bits) {
   const VU word = hn::Set(du, static_cast<uint32_t>(bits & 0xFFFFu));
@@ -193,8 +215,7 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
   constexpr int kQuadRowFragments = 4 * TraceTemplates::kRowQuads;
   for (int f = 0; f < count; f += 4) {
     if (t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count && row_fits(f)) {
-      const auto add = hn::Set(dw, offset[f]);
-      for (int at = 0; at < t.row_count; at += 8) block(t.row_reads, add, at);
+      write_row(t, offset[f], out + written);
       written += t.row_count;
       f += kQuadRowFragments - 4;
       continue;
@@ -217,8 +238,9 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
       if ((active >> (g + 1)) & 1u) one_fragment(g + 1);
     }
   }
-  // Every read written is new: the last is the trace's last granule.
-  last_granule = out[written - 1];
+  // Every read written is new: the last (or, after a repeat entry, its window's) is the trace's
+  // last granule.
+  last_granule = last_granule_before(out + written);
   return written;
 }
 
@@ -231,18 +253,8 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
              : trace_from_templates<false>(planes, taps, edges, count, active, out, last_granule);
 }
 
-// Writes TraceTemplates::row_reads plus offset at out (vectors: up to 7 entries past the
-// reads).
 void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
-  const DW dw;
-  const size_t wide = hn::Lanes(dw);
-  const auto add = hn::Set(dw, offset);
-  // Blocks of 8 (row_reads is padded to them), a fixed number of vectors each.
-  for (int at = 0; at < t.row_count; at += 8) {
-    for (size_t i = 0; i < 8; i += wide) {
-      hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
-    }
-  }
+  write_row(t, offset, out);
 }
 
 // Whether every fragment of [first, first + 32) samples the colour at its centre tap.
@@ -336,15 +348,41 @@ void BatchTracePlanes::prepare_templates() {
   t.rows = t.color_at_offset && texel_bytes == 4;
   if (t.rows) {
     int n = 0;
+    // The quad before (its first entry in row_reads and size) and the repeat entry after it.
+    int window_begin = 0, window_size = 0, repeat = -1;
+    t.row_repeats = 0;
     for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
       // Classes: bit 0 the left column, bit 1 the right one in the neighbouring granule.
       const uint32_t key = q == 0                              ? 1u + kTemplateClasses * 0u
                            : q == TraceTemplates::kRowQuads - 1 ? 0u + kTemplateClasses * 2u
                                                                 : 0u;
       t.row_keys[q] = key;
+      // The quad's reads, unfolded: its upper pair, then its lower pair one row on.
+      uint64_t quad[2 * TraceTemplates::kPairReads];
+      int size = 0;
       for (const uint64_t row : {uint64_t{0}, uint64_t{t.row_granules}}) {
-        for (int i = 0; i < t.pair_count[key]; ++i) t.row_reads[n++] = t.pair_reads[key][i] + row;
+        for (int i = 0; i < t.pair_count[key]; ++i) quad[size++] = t.pair_reads[key][i] + row;
       }
+      // A quad equal to the one before (the middle quads) repeats it: the windows are whole
+      // quads of granules, each quad's first read (depth) unlike the colour read before it.
+      if (q > 0 && size == window_size &&
+          std::equal(quad, quad + size, t.row_reads + window_begin)) {
+        if (repeat < 0) {
+          repeat = t.row_repeats++;
+          t.row_repeat_at[repeat] = n;
+          t.row_repeat[repeat] = repeat_entry(static_cast<uint32_t>(size), 1);
+          t.row_reads[n++] = 0;  // written over the sum
+        } else {
+          ++t.row_repeat[repeat];
+        }
+        continue;
+      }
+      std::copy(quad, quad + size, t.row_reads + n);
+      window_begin = n;
+      window_size = size;
+      repeat = -1;
+      n += size;
+      t.row_last = n - 1;
     }
     t.row_count = n;
     for (int i = n; i < TraceTemplates::kRowReads; ++i) t.row_reads[i] = 0;
@@ -373,8 +411,8 @@ int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps
     if ((edge_reads & quad_row) == 0 && t.row_reads[0] + offset != last_granule &&
         HWY_DYNAMIC_DISPATCH(ColorAtCentresKernel)(taps, first)) {
       HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, granules + written);
+      last_granule = granules[written + t.row_last];
       written += t.row_count;
-      last_granule = granules[written - 1];
       continue;
     }
     written += trace_batch(planes, taps, edges, kBatchFragments, quad_row, granules + written,
