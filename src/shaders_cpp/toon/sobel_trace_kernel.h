@@ -103,7 +103,7 @@ struct TraceTemplates {
   // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset,
   // a quad equal to the one before it folded into a repeat entry (the middle quads read the
   // same granules: one repeat entry for all but the first); row_repeat_at: where the repeat
-  // entries lie, written over the vector stores' sums; row_last: the row's last granule.
+  // entries lie, written over the vector stores' sums; row_last: where its last granule lies.
   bool rows = false;
   static constexpr int kRowQuads = 8;
   static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
@@ -164,11 +164,11 @@ int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
 int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
                    const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                    uint64_t& last_granule);
-// The same granules (some folded into repeat entries, repeat_entry) from the class templates
-// (TraceTemplates) for batches whose active
-// fragments all fit them (tap rows y - 1, y, y + 1, tap columns within a granule of the
-// centre's) and whose first read is new; returns -1, writing nothing of use and leaving
-// last_granule, for any other batch or planes without usable templates.
+// The same granules (edge-free quad rows folded, TraceTemplates::row_reads) from the class
+// templates (TraceTemplates) for batches whose active fragments all fit them (tap rows y - 1,
+// y, y + 1, tap columns within a granule of the centre's) and whose first read is new; returns
+// -1, writing nothing of use and leaving last_granule, for any other batch or planes without
+// usable templates.
 int trace_batch_template(const BatchTracePlanes& planes, const FragmentTaps& taps,
                          const FragmentEdges& edges, int count, uint64_t active,
                          uint64_t* granules, uint64_t& last_granule);
