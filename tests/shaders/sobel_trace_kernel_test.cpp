@@ -268,7 +268,11 @@ TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
     planes.depth = plane(3, 4096 * pick(3), 4, w, h);
     planes.has_normal = config % 4 != 0;
     planes.normal = plane(4, 64 * pick(20), 4, w, h);
-    planes.color = config % 5 == 4 ? plane(5, 4 * pick(20), 8, w, h) : plane(5, 64 * pick(4), 4, w, h);
+    // Colour planes laid out as depth, with their own texel size on a granule (rows with the
+    // colour at its own offset), or off a granule (no rows).
+    const uint64_t color_texel_bytes = config % 5 == 4 ? 8 : (config % 5 == 3 ? 8 + 8 * pick(2) : 4);
+    const uint64_t color_origin = config % 5 == 4 ? 4 * pick(20) : 64 * pick(4);
+    planes.color = plane(5, color_origin, color_texel_bytes, w, h);
     planes.has_border = config % 3 != 0;
     planes.border = plane(6, 4 * pick(5), 4, w, h);
     planes.prepare_tags();
@@ -333,9 +337,32 @@ TEST(SobelTraceKernel, EdgeFreeQuadRowsFoldIntoRepeats) {
   ASSERT_TRUE(planes.templates.rows);
   EXPECT_EQ(planes.templates.row_count, 121);
   EXPECT_EQ(planes.templates.row_repeats, 1);
+  // 8-byte colour texels: the colour granule changes at pixel 8, so quads 1-3 and 4-6 repeat
+  // twice each, too few to fold; the row template writes its colour reads at their offset.
+  BatchTracePlanes wide_color = planes;
+  wide_color.color = plane(5, 0, 8, kW, kH);
+  wide_color.prepare_tags();
+  ASSERT_TRUE(wide_color.templates.rows);
+  EXPECT_FALSE(wide_color.templates.color_at_offset);
+  EXPECT_EQ(wide_color.templates.row_count, 280);
+  EXPECT_EQ(wide_color.templates.row_repeats, 0);
+  EXPECT_EQ(wide_color.templates.row_colors, 32);
   std::mt19937 rng(7);
   for (const std::string& target : targets) {
     force_simd_target(target);
+    {
+      FragmentTaps taps;
+      fill_taps(rng, 48, 4, 1, false, kW, kH, kW, kH, taps);
+      const FragmentEdges edges{};
+      const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+      std::vector<uint64_t> expected(room), got(room);
+      uint64_t last_expected = 1, last_got = 1;
+      expected.resize(trace_batch_64(wide_color, taps, edges, kBatchFragments, ~uint64_t{0},
+                                     expected.data(), last_expected));
+      got.resize(trace_regular_batch(wide_color, taps, edges, got.data(), last_got));
+      EXPECT_EQ(got, expected) << target;
+      EXPECT_EQ(last_got, last_expected) << target;
+    }
     FragmentTaps taps;
     fill_taps(rng, 32, 8, 1, false, kW, kH, kW, kH, taps);
     const FragmentEdges edges{};  // none

@@ -97,13 +97,17 @@ struct TraceTemplates {
   int color_column_shift = 0;
   uint32_t color_row_granules = 0;
   int pair_first_color[kTemplateClasses * kTemplateClasses] = {};
-  // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
-  // granule and has no edge reads its quads' pairs in the classes of such a row: the left
-  // column of its first pixel and the right column of its last in the neighbouring granules.
+  // With pairs, 4-byte depth texels (16 per granule) and colour texels of 4 bytes or more, a
+  // quad row of 16 pixels that starts on a granule, samples the colour at its centres and has
+  // no edge reads its quads' pairs in the classes of such a row: the left column of its first
+  // pixel and the right column of its last in the neighbouring granules.
   // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset,
-  // a quad equal to the one before it folded into a repeat entry (the middle quads read the
-  // same granules: one repeat entry for all but the first); row_repeat_at: where the repeat
-  // entries lie, written over the vector stores' sums; row_last: where its last granule lies.
+  // a run of quads equal to the one before them (the middle quads read the same granules)
+  // folded into a repeat entry where it is long enough to pay (prepare_row_template);
+  // row_repeat_at: where the repeat entries lie, written over the vector stores' sums. Where the
+  // colour is not at the offset, its reads are row_color plus the first pixel's colour offset
+  // (cy * color_row_granules + (cx >> color_column_shift)), at row_color_at. row_last: where
+  // the row's last granule lies.
   bool rows = false;
   static constexpr int kRowQuads = 8;
   static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
@@ -113,8 +117,15 @@ struct TraceTemplates {
   int row_repeats = 0;
   int row_repeat_at[kRowQuads] = {};
   uint64_t row_repeat[kRowQuads] = {};
+  int row_colors = 0;
+  int row_color_at[4 * kRowQuads] = {};
+  uint64_t row_color[4 * kRowQuads] = {};
   int row_last = 0;
 };
+
+// Builds TraceTemplates::row_reads and the rest of the row template from the pair templates
+// (t.rows set, `color` the colour plane), sobel_trace_rows.cpp.
+void prepare_row_template(TraceTemplates& t, const TracePlane& color);
 
 // The planes a batch reads. Depth, normal and border share the depth grid's size.
 struct BatchTracePlanes {

@@ -10,7 +10,6 @@
 
 #include "raster/lane_bits-inl.h"
 
-#include <algorithm>
 #include <bit>
 
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
@@ -32,9 +31,11 @@ HWY_INLINE uint64_t last_granule_before(const uint64_t* end) {
   return is_repeat_entry(end[-1]) ? end[-2] : end[-1];
 }
 
-// TraceTemplates::row_reads plus offset at out, its repeat entries as they are (the vectors
-// write up to 7 entries past the row).
-HWY_INLINE void write_row(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
+// TraceTemplates::row_reads plus offset at out, its colour reads at color_offset (where they
+// are not at the offset) and its repeat entries as they are (the vectors write up to 7 entries
+// past the row).
+HWY_INLINE void write_row(const TraceTemplates& t, uint64_t offset, uint64_t color_offset,
+                          uint64_t* out) {
   const DW dw;
   const size_t wide = hn::Lanes(dw);
   const auto add = hn::Set(dw, offset);
@@ -44,6 +45,7 @@ HWY_INLINE void write_row(const TraceTemplates& t, uint64_t offset, uint64_t* ou
       hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
     }
   }
+  for (int k = 0; k < t.row_colors; ++k) out[t.row_color_at[k]] = t.row_color[k] + color_offset;
   for (int r = 0; r < t.row_repeats; ++r) out[t.row_repeat_at[r]] = t.row_repeat[r];
 }
 
@@ -214,8 +216,11 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
   };
   constexpr int kQuadRowFragments = 4 * TraceTemplates::kRowQuads;
   for (int f = 0; f < count; f += 4) {
-    if (t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count && row_fits(f)) {
-      write_row(t, offset[f], out + written);
+    // (Rows whose colour is at its own offset need the colour at the centres, which pairable
+    // does not test there: those go to trace_regular_batch only.)
+    if (kColorAtOffset && t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count &&
+        row_fits(f)) {
+      write_row(t, offset[f], offset[f], out + written);
       written += t.row_count;
       f += kQuadRowFragments - 4;
       continue;
@@ -253,8 +258,9 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
              : trace_from_templates<false>(planes, taps, edges, count, active, out, last_granule);
 }
 
-void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
-  write_row(t, offset, out);
+void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t color_offset,
+                    uint64_t* out) {
+  write_row(t, offset, color_offset, out);
 }
 
 // Whether every fragment of [first, first + 32) samples the colour at its centre tap.
@@ -345,48 +351,10 @@ void BatchTracePlanes::prepare_templates() {
       for (int i = n; i < TraceTemplates::kPairReads; ++i) t.pair_reads[key][i] = 0;
     }
   }
-  t.rows = t.color_at_offset && texel_bytes == 4;
-  if (t.rows) {
-    int n = 0;
-    // The quad before (its first entry in row_reads and size) and the repeat entry after it.
-    int window_begin = 0, window_size = 0, repeat = -1;
-    t.row_repeats = 0;
-    for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
-      // Classes: bit 0 the left column, bit 1 the right one in the neighbouring granule.
-      const uint32_t key = q == 0                              ? 1u + kTemplateClasses * 0u
-                           : q == TraceTemplates::kRowQuads - 1 ? 0u + kTemplateClasses * 2u
-                                                                : 0u;
-      t.row_keys[q] = key;
-      // The quad's reads, unfolded: its upper pair, then its lower pair one row on.
-      uint64_t quad[2 * TraceTemplates::kPairReads];
-      int size = 0;
-      for (const uint64_t row : {uint64_t{0}, uint64_t{t.row_granules}}) {
-        for (int i = 0; i < t.pair_count[key]; ++i) quad[size++] = t.pair_reads[key][i] + row;
-      }
-      // A quad equal to the one before (the middle quads) repeats it: the windows are whole
-      // quads of granules, each quad's first read (depth) unlike the colour read before it.
-      if (q > 0 && size == window_size &&
-          std::equal(quad, quad + size, t.row_reads + window_begin)) {
-        if (repeat < 0) {
-          repeat = t.row_repeats++;
-          t.row_repeat_at[repeat] = n;
-          t.row_repeat[repeat] = repeat_entry(static_cast<uint32_t>(size), 1);
-          t.row_reads[n++] = 0;  // written over the sum
-        } else {
-          ++t.row_repeat[repeat];
-        }
-        continue;
-      }
-      std::copy(quad, quad + size, t.row_reads + n);
-      window_begin = n;
-      window_size = size;
-      repeat = -1;
-      n += size;
-      t.row_last = n - 1;
-    }
-    t.row_count = n;
-    for (int i = n; i < TraceTemplates::kRowReads; ++i) t.row_reads[i] = 0;
-  }
+  // Rows: 4-byte depth texels (16 per granule) and colour texels of at least 4 bytes, so that
+  // a 16-pixel quad row on a granule reads whole colour granules from its first pixel's on.
+  t.rows = t.pairs && texel_bytes == 4 && color.texel_bytes >= 4;
+  if (t.rows) prepare_row_template(t, color);
   t.usable = true;
 }
 
@@ -410,7 +378,12 @@ int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps
                             static_cast<uint64_t>(x / kGranuleTexels);
     if ((edge_reads & quad_row) == 0 && t.row_reads[0] + offset != last_granule &&
         HWY_DYNAMIC_DISPATCH(ColorAtCentresKernel)(taps, first)) {
-      HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, granules + written);
+      // The colour at the centres: pixel row y + first / 16 of the colour plane, its granule
+      // column the first pixel's (the row starts on a depth granule, so on a colour one).
+      const uint64_t color_offset =
+          static_cast<uint64_t>(y + first / 16) * t.color_row_granules +
+          static_cast<uint64_t>(x >> t.color_column_shift);
+      HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, color_offset, granules + written);
       last_granule = granules[written + t.row_last];
       written += t.row_count;
       continue;
