@@ -10,9 +10,10 @@ namespace ontile::sobel {
 namespace {
 
 // A run of quads equal to the one before becomes one repeat entry only from this many repeats
-// on. The replay checks a repeat entry's window entry by entry (about 13 instructions each),
-// while the hits it skips cost about 3 each, plus about 2 in the stores and the copy into the
-// tile's trace: a 32-entry quad repeated 5 times pays, twice does not (session17-sobel.md).
+// on. The replay tests a repeat entry's window once (about 6 instructions per entry), against
+// about 3 per entry it skips plus about 2 in the stores and the copy into the tile's trace:
+// cartoon's quads repeated 5 times pay; universal's, repeated twice, measured 2.8 M
+// instructions worse on the demo frame than written whole (session17-sobel.md).
 constexpr int kMinRepeats = 3;
 
 // A read of the template: its value less the row's offset, and whether it is a colour read at
