@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "memory/trace_repeats.h"
 #include "raster/texel_trace.h"
 #include "raster/texture.h"
 #include "shaders_cpp/full_screen.h"
@@ -79,8 +80,10 @@ const SyntheticGBuffer& gbuffer() {
 // Shades the whole frame tile by tile, as the tile executor does; with `traced`, each tile's
 // texels go to a trace buffer that is cleared (keeping its capacity) per tile, so the number
 // measures the functor and its trace records, not buffer growth.
+// Counts the trace entries recorded and the granule accesses they stand for (repeat entries,
+// trace_repeats.h, expanded).
 void shade_frame(const SobelEdgeShader& shader, bool traced, std::vector<uint64_t>& granules,
-                 uint64_t& granules_recorded) {
+                 uint64_t& entries_recorded, uint64_t& granules_recorded) {
   QuadFragment quad;
   quad.lane_mask = 0xF;
   QuadOutput out;
@@ -101,7 +104,8 @@ void shade_frame(const SobelEdgeShader& shader, bool traced, std::vector<uint64_
           benchmark::DoNotOptimize(out);
         }
       }
-      granules_recorded += granules.size();
+      entries_recorded += granules.size();
+      granules_recorded += traced_accesses(granules);
     }
   }
 }
@@ -118,14 +122,15 @@ void BM_SobelEdgeFrame(benchmark::State& state) {
   const SobelEdgeShader shader(p);
   const bool traced = state.range(0) != 0;
   std::vector<uint64_t> granules;
-  uint64_t granules_recorded = 0;
-  for (auto _ : state) shade_frame(shader, traced, granules, granules_recorded);
+  uint64_t entries_recorded = 0, granules_recorded = 0;
+  for (auto _ : state) shade_frame(shader, traced, granules, entries_recorded, granules_recorded);
   const double pixels = static_cast<double>(kWidthPx) * kHeightPx;
   const double frames = static_cast<double>(state.iterations());
   // Seconds per pixel (printed with an SI prefix: 80n = 80 ns).
   state.counters["s_per_px"] = benchmark::Counter(
       pixels * frames, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["granules_per_px"] = static_cast<double>(granules_recorded) / (pixels * frames);
+  state.counters["entries_per_px"] = static_cast<double>(entries_recorded) / (pixels * frames);
 }
 
 BENCHMARK(BM_SobelEdgeFrame)->ArgName("traced")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "memory/trace_repeats.h"
 #include "raster/cell_raster.h"
 #include "shaders_cpp/toon/sobel_trace_kernel.h"
 
@@ -71,6 +72,24 @@ uint64_t random_active(std::mt19937& rng, int b, int count) {
   const uint64_t low = rng();
   const uint64_t high = rng();
   return (low | high << 32) & in_count;
+}
+
+// The granules a kernel's entries stand for, after checking its repeat entries keep the rules of
+// trace_repeats.h within what the call wrote: a window of at least 2 granules, no repeat entry
+// among them, none before the call's first entry. Counts the repeat entries in `repeats`.
+std::vector<uint64_t> expand_checked(const std::vector<uint64_t>& entries, int& repeats) {
+  for (size_t i = 0; i < entries.size(); ++i) {
+    if (!is_trace_repeat(entries[i])) continue;
+    ++repeats;
+    const uint32_t window = trace_repeat_window(entries[i]);
+    EXPECT_GE(window, 2u) << "entry " << i;
+    EXPECT_GE(trace_repeat_count(entries[i]), 1u) << "entry " << i;
+    EXPECT_LE(window, i) << "entry " << i;
+    for (size_t k = i - std::min<size_t>(window, i); k < i; ++k) {
+      EXPECT_FALSE(is_trace_repeat(entries[k])) << "entry " << i << " window entry " << k;
+    }
+  }
+  return expand_trace_repeats(entries);
 }
 
 TEST(SobelTraceKernel, ThirtyTwoBitLanesRecordTheSixtyFourBitKernelsGranules) {
@@ -151,7 +170,7 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
   const std::vector<std::string> targets = simd_targets();
   const AutomaticTargetOnExit restore;
   const uint64_t texel_sizes[] = {4, 4, 8, 16, 2};
-  int taken = 0, batches = 0, pair_configs = 0, own_color_configs = 0;
+  int taken = 0, batches = 0, pair_configs = 0, own_color_configs = 0, repeats = 0;
   for (int config = 0; config < 60; ++config) {
     const uint64_t texel_bytes = texel_sizes[pick(5)];
     const int granule_texels = static_cast<int>(64 / texel_bytes);
@@ -212,7 +231,7 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
       if (n_got >= 0) {
         ++taken;
         got.resize(n_got);
-        ASSERT_EQ(got, expected) << "config " << config << " batch " << b;
+        ASSERT_EQ(expand_checked(got, repeats), expected) << "config " << config << " batch " << b;
         ASSERT_EQ(last_got, last_expected) << "config " << config << " batch " << b;
       } else {
         ASSERT_EQ(last_got, last_before) << "config " << config << " batch " << b;
@@ -220,7 +239,8 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
       const int n_dispatched =
           trace_batch(planes, taps, edges, count, active, dispatched.data(), last_dispatched);
       dispatched.resize(n_dispatched);
-      ASSERT_EQ(dispatched, expected) << "config " << config << " batch " << b;
+      ASSERT_EQ(expand_checked(dispatched, repeats), expected)
+          << "config " << config << " batch " << b;
       ASSERT_EQ(last_dispatched, last_expected) << "config " << config << " batch " << b;
       ++batches;
     }
@@ -229,6 +249,7 @@ TEST(SobelTraceKernel, TemplatesRecordTheSixtyFourBitKernelsGranules) {
   EXPECT_GT(pair_configs, 20);
   EXPECT_GE(own_color_configs, 5);  // 5 of the 15 configs whose colour has another texel size
   EXPECT_GT(taken, batches / 6);  // most interior batches (a quarter), off the top and bottom rows
+  EXPECT_GT(repeats, 0);  // quad rows that row_fits takes fold
 }
 
 // trace_regular_batch (quad rows from the row template) against the 64-bit kernel on whole
@@ -239,14 +260,19 @@ TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
   const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
   const std::vector<std::string> targets = simd_targets();
   const AutomaticTargetOnExit restore;
-  int batches = 0;
+  int batches = 0, repeats = 0;
+  size_t entries = 0, granules = 0;
   for (int config = 0; config < 24; ++config) {
     const int w = 48 + 16 * pick(6), h = 12 + pick(30);
     BatchTracePlanes planes;
     planes.depth = plane(3, 4096 * pick(3), 4, w, h);
     planes.has_normal = config % 4 != 0;
     planes.normal = plane(4, 64 * pick(20), 4, w, h);
-    planes.color = config % 5 == 4 ? plane(5, 4 * pick(20), 8, w, h) : plane(5, 64 * pick(4), 4, w, h);
+    // Colour planes laid out as depth, with their own texel size on a granule (rows with the
+    // colour at its own offset), or off a granule (no rows).
+    const uint64_t color_texel_bytes = config % 5 == 4 ? 8 : (config % 5 == 3 ? 8 + 8 * pick(2) : 4);
+    const uint64_t color_origin = config % 5 == 4 ? 4 * pick(20) : 64 * pick(4);
+    planes.color = plane(5, color_origin, color_texel_bytes, w, h);
     planes.has_border = config % 3 != 0;
     planes.border = plane(6, 4 * pick(5), 4, w, h);
     planes.prepare_tags();
@@ -269,12 +295,90 @@ TEST(SobelTraceKernel, RegularBatchesRecordTheSixtyFourBitKernelsGranules) {
       const int n_got = trace_regular_batch(planes, taps, edges, got.data(), last_got);
       expected.resize(n_expected);
       got.resize(n_got);
-      ASSERT_EQ(got, expected) << "config " << config << " batch " << b;
+      ASSERT_EQ(expand_checked(got, repeats), expected) << "config " << config << " batch " << b;
       ASSERT_EQ(last_got, last_expected) << "config " << config << " batch " << b;
       ++batches;
+      entries += got.size();
+      granules += expected.size();
     }
   }
   EXPECT_EQ(batches, 24 * 24);
+  // Edge-free granule-aligned quad rows fold: fewer entries than the granules they stand for.
+  EXPECT_GT(repeats, batches / 8);
+  EXPECT_LT(entries, granules);
+}
+
+// The kernels' repeat entries are the memory layer's (trace_repeats.h), which the shaders layer
+// cannot include.
+TEST(SobelTraceKernel, RepeatEntriesAreTheTraceFormats) {
+  static_assert(repeat_entry(2, 1) == trace_repeat(2, 1));
+  static_assert(repeat_entry(40, 0xffffffffu) == trace_repeat(40, kTraceRepeatMaxCount));
+  static_assert(repeat_entry(0x7fffffffu, 7) == trace_repeat(0x7fffffffu, 7));
+  static_assert(is_repeat_entry(trace_repeat(3, 1)) && !is_repeat_entry(~kTraceRepeatBit));
+  EXPECT_EQ(trace_repeat_window(repeat_entry(18, 5)), 18u);
+  EXPECT_EQ(trace_repeat_count(repeat_entry(18, 5) + 1), 6u);  // ++ adds a repeat
+}
+
+// An edge-free granule-aligned batch of the regular pass: each quad row's middle quads fold into
+// one repeat entry of a whole quad (8 granules per pixel become 121 entries per 32 pixels with a
+// normal plane), and the entries expand to the 64-bit kernel's granules.
+TEST(SobelTraceKernel, EdgeFreeQuadRowsFoldIntoRepeats) {
+  const std::vector<std::string> targets = simd_targets();
+  const AutomaticTargetOnExit restore;
+  constexpr int kW = 128, kH = 32;
+  BatchTracePlanes planes;
+  planes.depth = plane(3, 0, 4, kW, kH);
+  planes.has_normal = true;
+  planes.normal = plane(4, 0, 4, kW, kH);
+  planes.color = plane(5, 0, 4, kW, kH);
+  planes.has_border = true;
+  planes.border = plane(6, 0, 4, kW, kH);
+  planes.prepare_tags();
+  ASSERT_TRUE(planes.templates.rows);
+  EXPECT_EQ(planes.templates.row_count, 121);
+  EXPECT_EQ(planes.templates.row_repeats, 1);
+  // 8-byte colour texels: the colour granule changes at pixel 8, so quads 1-3 and 4-6 repeat
+  // twice each, too few to fold; the row template writes its colour reads at their offset.
+  BatchTracePlanes wide_color = planes;
+  wide_color.color = plane(5, 0, 8, kW, kH);
+  wide_color.prepare_tags();
+  ASSERT_TRUE(wide_color.templates.rows);
+  EXPECT_FALSE(wide_color.templates.color_at_offset);
+  EXPECT_EQ(wide_color.templates.row_count, 280);
+  EXPECT_EQ(wide_color.templates.row_repeats, 0);
+  EXPECT_EQ(wide_color.templates.row_colors, 32);
+  std::mt19937 rng(7);
+  for (const std::string& target : targets) {
+    force_simd_target(target);
+    {
+      FragmentTaps taps;
+      fill_taps(rng, 48, 4, 1, false, kW, kH, kW, kH, taps);
+      const FragmentEdges edges{};
+      const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+      std::vector<uint64_t> expected(room), got(room);
+      uint64_t last_expected = 1, last_got = 1;
+      expected.resize(trace_batch_64(wide_color, taps, edges, kBatchFragments, ~uint64_t{0},
+                                     expected.data(), last_expected));
+      got.resize(trace_regular_batch(wide_color, taps, edges, got.data(), last_got));
+      EXPECT_EQ(got, expected) << target;
+      EXPECT_EQ(last_got, last_expected) << target;
+    }
+    FragmentTaps taps;
+    fill_taps(rng, 32, 8, 1, false, kW, kH, kW, kH, taps);
+    const FragmentEdges edges{};  // none
+    const size_t room = kBatchFragments * kTraceSlots + kTraceSlack;
+    std::vector<uint64_t> expected(room), got(room);
+    uint64_t last_expected = 1, last_got = 1;
+    expected.resize(trace_batch_64(planes, taps, edges, kBatchFragments, ~uint64_t{0},
+                                   expected.data(), last_expected));
+    got.resize(trace_regular_batch(planes, taps, edges, got.data(), last_got));
+    int repeats = 0;
+    EXPECT_EQ(expand_checked(got, repeats), expected) << target;
+    EXPECT_EQ(repeats, 2) << target;
+    EXPECT_EQ(got.size(), 2u * 121u) << target;
+    EXPECT_EQ(expected.size(), 2u * 32u * 8u + 2u * 24u) << target;  // 8 per pixel, 12 per edge pixel
+    EXPECT_EQ(last_got, last_expected) << target;
+  }
 }
 
 // Unaligned depth or normal planes, one texture as two planes, or differing texel sizes leave

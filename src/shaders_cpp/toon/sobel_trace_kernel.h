@@ -51,6 +51,16 @@ inline constexpr uint32_t kReadPatternSlots[kReadPatterns] = {
 // template kernel and the pattern gathers may write up to this many entries past the last read.
 constexpr int kTraceSlack = 8;
 
+// A repeat entry of a texture trace, "the `window` entries before me, `repeats` more times",
+// in the format of memory/trace_repeats.h (which the shaders layer cannot include; its rules:
+// window >= 2 granules right before the entry, in the same tile's trace, no repeat entry among
+// them). tests/shaders/sobel_trace_kernel_test.cpp checks that the two agree.
+constexpr uint64_t kRepeatEntryBit = uint64_t{1} << 63;
+constexpr uint64_t repeat_entry(uint32_t window, uint32_t repeats) {
+  return kRepeatEntryBit | uint64_t{window} << 32 | repeats;
+}
+constexpr bool is_repeat_entry(uint64_t entry) { return (entry & kRepeatEntryBit) != 0; }
+
 // Read classes of the template kernel (trace_batch_template): bit 0, the left tap column lies
 // in the granule before the centre's; bit 1, the right one in the granule after; bit 2, a depth
 // edge (no normal taps besides the centre).
@@ -87,17 +97,35 @@ struct TraceTemplates {
   int color_column_shift = 0;
   uint32_t color_row_granules = 0;
   int pair_first_color[kTemplateClasses * kTemplateClasses] = {};
-  // With pairs and 4-byte texels (16 per granule), a quad row of 16 pixels that starts on a
-  // granule and has no edge reads its quads' pairs in the classes of such a row: the left
-  // column of its first pixel and the right column of its last in the neighbouring granules.
-  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset.
+  // With pairs, 4-byte depth texels (16 per granule) and colour texels of 4 bytes or more, a
+  // quad row of 16 pixels that starts on a granule, samples the colour at its centres and has
+  // no edge reads its quads' pairs in the classes of such a row: the left column of its first
+  // pixel and the right column of its last in the neighbouring granules.
+  // row_reads: all its reads (upper and lower pair of each quad) less the first pixel's offset,
+  // a run of quads equal to the one before them (the middle quads read the same granules)
+  // folded into a repeat entry where it is long enough to pay (prepare_row_template);
+  // row_repeat_at: where the repeat entries lie, written over the vector stores' sums. Where the
+  // colour is not at the offset, its reads are row_color plus the first pixel's colour offset
+  // (cy * color_row_granules + (cx >> color_column_shift)), at row_color_at. row_last: where
+  // the row's last granule lies.
   bool rows = false;
   static constexpr int kRowQuads = 8;
   static constexpr int kRowReads = 2 * kRowQuads * kPairReads;
   uint32_t row_keys[kRowQuads] = {};
   alignas(64) uint64_t row_reads[kRowReads] = {};
   int row_count = 0;
+  int row_repeats = 0;
+  int row_repeat_at[kRowQuads] = {};
+  uint64_t row_repeat[kRowQuads] = {};
+  int row_colors = 0;
+  int row_color_at[4 * kRowQuads] = {};
+  uint64_t row_color[4 * kRowQuads] = {};
+  int row_last = 0;
 };
+
+// Builds TraceTemplates::row_reads and the rest of the row template from the pair templates
+// (t.rows set, `color` the colour plane), sobel_trace_rows.cpp.
+void prepare_row_template(TraceTemplates& t, const TracePlane& color);
 
 // The planes a batch reads. Depth, normal and border share the depth grid's size.
 struct BatchTracePlanes {
@@ -131,8 +159,11 @@ struct BatchTracePlanes {
 // taps row by row, the normal centre (with a normal plane), the other 8 normal taps where
 // depth found no edge, the colour at (color_x, color_y), the border at the nearest tap where
 // there is an edge (with a border plane), each skipped when equal to the granule before it
-// (`last_granule` before the first; updated). Returns how many granules it wrote to
-// `granules` (room for count * kTraceSlots + kTraceSlack).
+// (`last_granule` before the first; updated). Returns how many entries it wrote to
+// `granules` (room for count * kTraceSlots + kTraceSlack): granules and, from the template
+// kernels, repeat entries (repeat_entry) whose windows lie in what this call wrote, so
+// expand_trace_repeats of the entries gives those granules; last_granule is the last granule
+// of that expansion.
 int trace_batch(const BatchTracePlanes& planes, const FragmentTaps& taps,
                 const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                 uint64_t& last_granule);
@@ -144,10 +175,11 @@ int trace_batch_64(const BatchTracePlanes& planes, const FragmentTaps& taps,
 int trace_batch_32(const BatchTracePlanes& planes, const FragmentTaps& taps,
                    const FragmentEdges& edges, int count, uint64_t active, uint64_t* granules,
                    uint64_t& last_granule);
-// The same granules from the class templates (TraceTemplates) for batches whose active
-// fragments all fit them (tap rows y - 1, y, y + 1, tap columns within a granule of the
-// centre's) and whose first read is new; returns -1, writing nothing of use and leaving
-// last_granule, for any other batch or planes without usable templates.
+// The same granules (edge-free quad rows folded, TraceTemplates::row_reads) from the class
+// templates (TraceTemplates) for batches whose active fragments all fit them (tap rows y - 1,
+// y, y + 1, tap columns within a granule of the centre's) and whose first read is new; returns
+// -1, writing nothing of use and leaving last_granule, for any other batch or planes without
+// usable templates.
 int trace_batch_template(const BatchTracePlanes& planes, const FragmentTaps& taps,
                          const FragmentEdges& edges, int count, uint64_t active,
                          uint64_t* granules, uint64_t& last_granule);

@@ -25,6 +25,30 @@ using DU = hn::ScalableTag<uint32_t>;
 using VU = hn::Vec<DU>;
 using DW = hn::ScalableTag<uint64_t>;
 
+// The last granule of a trace that ends at `end`: a repeat entry's window (right before it)
+// ends with the granule its expansion ends with.
+HWY_INLINE uint64_t last_granule_before(const uint64_t* end) {
+  return is_repeat_entry(end[-1]) ? end[-2] : end[-1];
+}
+
+// TraceTemplates::row_reads plus offset at out, its colour reads at color_offset (where they
+// are not at the offset) and its repeat entries as they are (the vectors write up to 7 entries
+// past the row).
+HWY_INLINE void write_row(const TraceTemplates& t, uint64_t offset, uint64_t color_offset,
+                          uint64_t* out) {
+  const DW dw;
+  const size_t wide = hn::Lanes(dw);
+  const auto add = hn::Set(dw, offset);
+  // Blocks of 8 (row_reads is padded to them), a fixed number of vectors each.
+  for (int at = 0; at < t.row_count; at += 8) {
+    for (size_t i = 0; i < 8; i += wide) {
+      hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
+    }
+  }
+  for (int k = 0; k < t.row_colors; ++k) out[t.row_color_at[k]] = t.row_color[k] + color_offset;
+  for (int r = 0; r < t.row_repeats; ++r) out[t.row_repeat_at[r]] = t.row_repeat[r];
+}
+
 HWY_INLINE hn::Mask<DU> lanes_of(DU du, uint64_t bits) {
   const VU word = hn::Set(du, static_cast<uint32_t>(bits & 0xFFFFu));
   return hn::Ne(hn::And(word, hn::Load(du, kLaneBit32)), hn::Zero(du));
@@ -192,9 +216,11 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
   };
   constexpr int kQuadRowFragments = 4 * TraceTemplates::kRowQuads;
   for (int f = 0; f < count; f += 4) {
-    if (t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count && row_fits(f)) {
-      const auto add = hn::Set(dw, offset[f]);
-      for (int at = 0; at < t.row_count; at += 8) block(t.row_reads, add, at);
+    // (Rows whose colour is at its own offset need the colour at the centres, which pairable
+    // does not test there: those go to trace_regular_batch only.)
+    if (kColorAtOffset && t.rows && f % kQuadRowFragments == 0 && f + kQuadRowFragments <= count &&
+        row_fits(f)) {
+      write_row(t, offset[f], offset[f], out + written);
       written += t.row_count;
       f += kQuadRowFragments - 4;
       continue;
@@ -217,8 +243,9 @@ HWY_INLINE int trace_from_templates(const BatchTracePlanes& planes, const Fragme
       if ((active >> (g + 1)) & 1u) one_fragment(g + 1);
     }
   }
-  // Every read written is new: the last is the trace's last granule.
-  last_granule = out[written - 1];
+  // Every read written is new: the last (or, after a repeat entry, its window's) is the trace's
+  // last granule.
+  last_granule = last_granule_before(out + written);
   return written;
 }
 
@@ -231,18 +258,9 @@ int TraceBatchTemplateKernel(const BatchTracePlanes& planes, const FragmentTaps&
              : trace_from_templates<false>(planes, taps, edges, count, active, out, last_granule);
 }
 
-// Writes TraceTemplates::row_reads plus offset at out (vectors: up to 7 entries past the
-// reads).
-void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t* out) {
-  const DW dw;
-  const size_t wide = hn::Lanes(dw);
-  const auto add = hn::Set(dw, offset);
-  // Blocks of 8 (row_reads is padded to them), a fixed number of vectors each.
-  for (int at = 0; at < t.row_count; at += 8) {
-    for (size_t i = 0; i < 8; i += wide) {
-      hn::StoreU(hn::Add(hn::Load(dw, t.row_reads + at + i), add), dw, out + at + i);
-    }
-  }
+void WriteRowKernel(const TraceTemplates& t, uint64_t offset, uint64_t color_offset,
+                    uint64_t* out) {
+  write_row(t, offset, color_offset, out);
 }
 
 // Whether every fragment of [first, first + 32) samples the colour at its centre tap.
@@ -333,22 +351,10 @@ void BatchTracePlanes::prepare_templates() {
       for (int i = n; i < TraceTemplates::kPairReads; ++i) t.pair_reads[key][i] = 0;
     }
   }
-  t.rows = t.color_at_offset && texel_bytes == 4;
-  if (t.rows) {
-    int n = 0;
-    for (int q = 0; q < TraceTemplates::kRowQuads; ++q) {
-      // Classes: bit 0 the left column, bit 1 the right one in the neighbouring granule.
-      const uint32_t key = q == 0                              ? 1u + kTemplateClasses * 0u
-                           : q == TraceTemplates::kRowQuads - 1 ? 0u + kTemplateClasses * 2u
-                                                                : 0u;
-      t.row_keys[q] = key;
-      for (const uint64_t row : {uint64_t{0}, uint64_t{t.row_granules}}) {
-        for (int i = 0; i < t.pair_count[key]; ++i) t.row_reads[n++] = t.pair_reads[key][i] + row;
-      }
-    }
-    t.row_count = n;
-    for (int i = n; i < TraceTemplates::kRowReads; ++i) t.row_reads[i] = 0;
-  }
+  // Rows: 4-byte depth texels (16 per granule) and colour texels of at least 4 bytes, so that
+  // a 16-pixel quad row on a granule reads whole colour granules from its first pixel's on.
+  t.rows = t.pairs && texel_bytes == 4 && color.texel_bytes >= 4;
+  if (t.rows) prepare_row_template(t, color);
   t.usable = true;
 }
 
@@ -372,9 +378,14 @@ int trace_regular_batch(const BatchTracePlanes& planes, const FragmentTaps& taps
                             static_cast<uint64_t>(x / kGranuleTexels);
     if ((edge_reads & quad_row) == 0 && t.row_reads[0] + offset != last_granule &&
         HWY_DYNAMIC_DISPATCH(ColorAtCentresKernel)(taps, first)) {
-      HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, granules + written);
+      // The colour at the centres: pixel row y + first / 16 of the colour plane, its granule
+      // column the first pixel's (the row starts on a depth granule, so on a colour one).
+      const uint64_t color_offset =
+          static_cast<uint64_t>(y + first / 16) * t.color_row_granules +
+          static_cast<uint64_t>(x >> t.color_column_shift);
+      HWY_DYNAMIC_DISPATCH(WriteRowKernel)(t, offset, color_offset, granules + written);
+      last_granule = granules[written + t.row_last];
       written += t.row_count;
-      last_granule = granules[written - 1];
       continue;
     }
     written += trace_batch(planes, taps, edges, kBatchFragments, quad_row, granules + written,
