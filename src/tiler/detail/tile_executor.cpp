@@ -228,7 +228,13 @@ void rasterize_cells(const TriangleContext& ctx, const TileCells& cells, const C
         }
       }
       if (!usual_depth) {
-        depth_test_cell_samples(ctx, cells, cell, cx, cy, st, memory, scratch);
+        if (ctx.has_depth) {
+          depth_test_cell_samples(ctx, cells, cell, cx, cy, st, memory, scratch);
+        } else {
+          // No depth attachment (full-screen passes): nothing reads the depth, every covered
+          // sample passes, as depth_test_cell_samples decides without the call.
+          for (int s = 0; s < samples; ++s) st.passing[s] = st.covered[s];
+        }
         continue;
       }
       // Only the rows with covered pixels: nothing reads the depth of others. With a write, the
