@@ -162,12 +162,14 @@ struct ReadState {
   }
 };
 
-// The calling thread's read states (constant-initialised, so no guard on access). A batch call
-// runs no other batch call on its thread (after_quad hooks only trace), so one set serves. Not
-// inlined: inlined, the thread-local address was computed again in the block loop, a call to
-// the TLS resolver with the vector registers saved around it.
+// The calling thread's read states. A batch call runs no other batch call on its thread
+// (after_quad hooks only trace), so one set serves. Not constinit: ReadState leaves its lane
+// arrays to be written before use, which clang rejects in a constant initializer (they start
+// zeroed as every thread_local does). Not inlined: inlined, the thread-local address was
+// computed again in the block loop, a call to the TLS resolver with the vector registers saved
+// around it.
 HWY_NOINLINE ReadState* thread_read_states() {
-  static thread_local constinit ReadState states[QuadBatch8::kMaxReads];
+  static thread_local ReadState states[QuadBatch8::kMaxReads];
   return states;
 }
 
